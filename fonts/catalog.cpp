@@ -1,0 +1,63 @@
+#include "fonts/catalog.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+#include "fonts/error.hpp"
+
+namespace fs = std::filesystem;
+
+namespace mark {
+
+std::vector<std::string> font_directories() {
+  std::vector<std::string> dirs;
+  // MARKER_FONT_PATH lets a user add directories (colon-separated) before the system ones.
+  if (const char* extra = std::getenv("MARKER_FONT_PATH")) {
+    std::string s = extra;
+    std::size_t start = 0;
+    while (start <= s.size()) {
+      const std::size_t end = std::min(s.find(':', start), s.size());
+      if (end > start) dirs.push_back(s.substr(start, end - start));
+      start = end + 1;
+    }
+  }
+  for (const char* d : {"/usr/share/hershey-fonts", "/usr/share/librecad/fonts",
+                        "/usr/share/qcad/fonts"})
+    dirs.emplace_back(d);
+  return dirs;
+}
+
+std::vector<FontFile> installed_fonts() {
+  std::vector<FontFile> out;
+  for (const std::string& dir : font_directories()) {
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) continue;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+      std::string ext = entry.path().extension().string();
+      std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+      if (ext == ".jhf" || ext == ".lff" || ext == ".cxf")
+        out.push_back({entry.path().stem().string(), ext.substr(1), entry.path().string()});
+    }
+  }
+  std::stable_sort(out.begin(), out.end(), [](const FontFile& a, const FontFile& b) {
+    return a.name < b.name;
+  });
+  return out;
+}
+
+std::shared_ptr<const StrokeFont> open_font(const std::string& name, Warnings* warnings) {
+  if (name == kBuiltinFontName || name.empty())
+    return std::shared_ptr<const StrokeFont>(&builtin_font(), [](const StrokeFont*) {});
+  std::error_code ec;
+  if (fs::is_regular_file(name, ec)) return std::make_shared<StrokeFont>(load_font_file(name, warnings));
+  const fs::path wanted(name);
+  for (const FontFile& f : installed_fonts()) {
+    if (f.name == name || fs::path(f.path).filename() == wanted)
+      return std::make_shared<StrokeFont>(load_font_file(f.path, warnings));
+  }
+  throw InputError("unknown font '" + name +
+                   "': not 'builtin', not a font file, and not an installed font (see 'marker fonts')");
+}
+
+}  // namespace mark

@@ -1,0 +1,31 @@
+#include "marker/cli/cli.hpp"
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "fonts/error.hpp"
+#include "marker/cli/commands.hpp"
+
+namespace mark::cli {
+
+int run(int argc, char** argv) {
+  CLI::App app{"marker — laser galvo marking engine"};
+  app.require_subcommand(1);
+  std::vector<Command> commands = all_commands();
+  for (Command& c : commands) c.attach(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    for (Command& c : commands)
+      if (c.parsed()) return c.run();
+  } catch (const std::exception& e) {
+    std::cerr << "marker: " << e.what() << "\n";
+    return 1;
+  }
+  return 1;
+}
+
+}  // namespace mark::cli

@@ -1,0 +1,27 @@
+#pragma once
+// A subcommand: `attach` adds it and its options to the app; `run` executes it after parsing.
+// Each command's file defines one `Command make_<name>_command()`; all_commands() lists them.
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace mark::cli {
+
+class Command {
+ public:
+  Command(std::function<CLI::App*(CLI::App&)> attach, std::function<int()> run)
+      : attach_(std::move(attach)), run_(std::move(run)) {}
+  void attach(CLI::App& app) { sub_ = attach_(app); }
+  bool parsed() const { return sub_ && sub_->parsed(); }
+  int run() { return run_(); }
+
+ private:
+  std::function<CLI::App*(CLI::App&)> attach_;
+  std::function<int()> run_;
+  CLI::App* sub_ = nullptr;
+};
+
+std::vector<Command> all_commands();
+
+}  // namespace mark::cli

@@ -1,0 +1,66 @@
+// Strategy `blanking`, the seed's claim (EP 0657850, claim 3): where two lit elements that are
+// drawn one after the other meet at a corner turning by more than the pen's blank angle, three
+// laser-off lines are inserted — a run-out extending the first element forward along its end
+// tangent, a run-in extending the second backward along its start tangent, and a line joining the
+// two. Every stroke also starts with a run-in and ends with a run-out. So the mirrors reach each
+// lit element already moving at marking speed along it, and leave it the same way; with the laser
+// bit delayed by τ (the seed's delay means) the burn starts and stops on the end points.
+//
+// Each lit element is marked at the speed nearest the pen's at which it takes a whole number of
+// ticks, and its run-in and run-out run at that same speed for a whole number of ticks: then
+// every element boundary falls on a tick and the beam's speed does not change where the laser
+// switches, which is what the τ delay assumes.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "marker/plan/plan.hpp"
+#include "marker/plan/plan_builder.hpp"
+
+namespace mark {
+namespace {
+
+double whole_tick_speed(const Element& e, double speed_mm_s, double tick_s) {
+  const double len = e.length();
+  const double ticks = std::max(1.0, std::round(len / (speed_mm_s * tick_s)));
+  return len / (ticks * tick_s);
+}
+
+}  // namespace
+
+void plan_stroke_blanking(PlanBuilder& b, const Stroke& stroke) {
+  const Pen& pen = b.pen;
+  const double limit_rad = pen.blank_angle_deg * std::numbers::pi / 180.0;
+  const double step_mm = pen.mark_speed_mm_s * pen.tick_s;
+  const double in_ticks = std::round(pen.run_in_mm / step_mm);
+  const double out_ticks = std::round(pen.run_out_mm / step_mm);
+  const double join_speed = pen.join_speed_mm_s > 0 ? pen.join_speed_mm_s : pen.jump_speed_mm_s;
+  const std::vector<Element>& els = stroke.elements;
+
+  for (std::size_t i = 0; i < els.size(); ++i) {
+    const Element& e = els[i];
+    const double v = whole_tick_speed(e, pen.mark_speed_mm_s, pen.tick_s);
+    const bool starts_run = i == 0 || turn_angle_rad(els[i - 1], e) > limit_rad;
+    if (starts_run) {
+      const double len = in_ticks * v * pen.tick_s;
+      const Point from = e.start() - len * e.tangent_at(0.0);
+      if (i == 0) {
+        b.jump_to(from);
+      } else if ((from - b.at).norm() > kJoinTolerance_mm) {
+        b.move(Command::mark(Element::line(b.at, from, false), join_speed,
+                             CommandRole::blank_join));
+      }
+      if (len > 0) b.move(Command::mark(Element::line(from, e.start(), false), v,
+                                        CommandRole::run_in));
+    }
+    b.move(Command::mark(e, v, CommandRole::stroke));
+    const bool ends_run = i + 1 == els.size() || turn_angle_rad(e, els[i + 1]) > limit_rad;
+    if (ends_run && out_ticks > 0) {
+      const double len = out_ticks * v * pen.tick_s;
+      b.move(Command::mark(Element::line(e.end(), e.end() + len * e.tangent_at(1.0), false), v,
+                           CommandRole::run_out));
+    }
+  }
+}
+
+}  // namespace mark

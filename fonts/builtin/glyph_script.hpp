@@ -18,8 +18,8 @@
 // of the start of the arc after it is snapped onto that start, so a line can run into an arc at
 // an irrational point without 10-digit coordinates. The parser keeps the design honest: an arc
 // that ends within 0.01 of the next element's start without joining it (a near miss that would
-// mark a tiny gap), an M followed by an arc that does not start there, a zero-length element and
-// a trailing M are errors.
+// mark a tiny gap), an M followed by an arc that starts 0.01 or more away from it, a zero-length
+// element and a trailing M are errors.
 #include <string_view>
 
 #include "fonts/glyph.hpp"

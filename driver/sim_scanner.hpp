@@ -64,8 +64,8 @@ class SimScanner : public Sink<ScanSample> {
   };
   void check_block(std::span<const ScanSample> block) const;
   void follow(const ScanSample& s);
-  void step_axis(Axis& a, double cmd, double cmd_speed, double dt) const;
-  void record_lit(Vec2 p, bool lit);
+  void step_axis(Axis& a, double cmd, double dt) const;
+  void record_lit(Vec2 p0, Vec2 p1, bool lit);
 
   SimScannerOptions options_;
   Axis axis_[2];

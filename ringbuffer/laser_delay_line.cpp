@@ -26,25 +26,27 @@ bool LaserDelayLine::output_bit() {
 void LaserDelayLine::apply(std::span<ScanSample> block) {
   for (ScanSample& s : block) {
     feed(s.laser);
-    s.laser = output_bit();
+    s.laser = last_out_ = output_bit();
     ++now_;
   }
 }
 
 void LaserDelayLine::flush(const ScanSample& last, std::vector<ScanSample>& tail) {
-  ScanSample hold = last;
-  hold.laser = false;
   feed(false);  // the end of the stream is an off edge
-  while (!pulses_.empty()) {
-    ScanSample s = hold;
-    s.laser = output_bit();
-    if (pulses_.empty()) break;  // the last pulse ended before this tick: nothing owed
-    tail.push_back(s);
-    ++now_;
-    feed(false);
+  // Emit hold samples until every pending pulse has been played and the laser is off; the last
+  // sample owed is the one that switches it off, so the device is left dark.
+  if (last_out_ || !pulses_.empty()) {
+    ScanSample s = last;
+    do {
+      s.laser = last_out_ = output_bit();
+      tail.push_back(s);
+      ++now_;
+    } while (s.laser || !pulses_.empty());
   }
   now_ = 0;
   input_on_ = false;
+  last_out_ = false;
+  pulses_.clear();
 }
 
 }  // namespace mark

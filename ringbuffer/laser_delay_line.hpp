@@ -12,7 +12,8 @@
 // output laser bit at a tick is on exactly when that tick lies inside some output pulse.
 //
 // flush(): the stream end counts as a laser-off edge; the filter emits hold samples at the last
-// position until every pending output pulse has ended, so the laser is off when it returns.
+// position until every pending output pulse has been played, ending with a laser-off sample, so
+// the device is left dark (nothing is emitted if the output is already off with nothing pending).
 #include <cstddef>
 #include <cstdint>
 #include <deque>
@@ -49,6 +50,7 @@ class LaserDelayLine : public SampleFilter<ScanSample> {
   std::size_t off_delay_;
   std::uint64_t now_ = 0;     // stream tick of the next sample
   bool input_on_ = false;     // input laser bit of the previous tick
+  bool last_out_ = false;     // output laser bit of the previous tick
   std::deque<Pulse> pulses_;  // pending output pulses, ordered by start
 };
 

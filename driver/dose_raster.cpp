@@ -60,21 +60,30 @@ double DoseRaster::pixel(std::int64_t ix, std::int64_t iy) const {
 }
 
 double DoseRaster::sum_disc(Vec2 p, double radius_mm) const {
+  // Anti-aliased disc: a pixel counts fully inside r − ½ px, partly (linearly) out to r + ½ px,
+  // so the window holds the same area wherever p falls between pixel centres — a hard-edged
+  // disc of 3 px radius would swing by 7/6 as p moves half a pixel along a line.
   const double r = radius_mm / pixel_mm_;
   const double cx = p.x / pixel_mm_, cy = p.y / pixel_mm_;
-  const auto iy0 = static_cast<std::int64_t>(std::ceil(cy - r));
-  const auto iy1 = static_cast<std::int64_t>(std::floor(cy + r));
+  const double reach = r + 0.5;
+  const auto iy0 = static_cast<std::int64_t>(std::ceil(cy - reach));
+  const auto iy1 = static_cast<std::int64_t>(std::floor(cy + reach));
   double sum = 0;
   for (std::int64_t iy = iy0; iy <= iy1; ++iy) {
     const double dy = static_cast<double>(iy) - cy;
-    const double half = std::sqrt(std::max(0.0, r * r - dy * dy));
+    const double half = std::sqrt(std::max(0.0, reach * reach - dy * dy));
     const auto ix0 = static_cast<std::int64_t>(std::ceil(cx - half));
     const auto ix1 = static_cast<std::int64_t>(std::floor(cx + half));
     // One tile lookup per run of the row inside a tile (sum_disc runs in quality loops).
     for (std::int64_t ix = ix0; ix <= ix1;) {
       const std::int64_t run_end = std::min(ix1, (ix | (tile_size - 1)));
-      if (const float* p0 = find_pixel(ix, iy))
-        for (std::int64_t k = 0; k <= run_end - ix; ++k) sum += p0[k];
+      if (const float* row = find_pixel(ix, iy)) {
+        for (std::int64_t k = 0; k <= run_end - ix; ++k) {
+          const double dx = static_cast<double>(ix + k) - cx;
+          const double w = std::clamp(reach - std::sqrt(dx * dx + dy * dy), 0.0, 1.0);
+          sum += w * row[k];
+        }
+      }
       ix = run_end + 1;
     }
   }

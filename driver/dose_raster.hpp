@@ -23,7 +23,8 @@ class DoseRaster {
 
   // Dose of pixel (ix, iy); pixel (ix, iy) is centred on (ix·pixel, iy·pixel) mm.
   double pixel(std::int64_t ix, std::int64_t iy) const;
-  // Sum of the pixels whose centres lie within radius_mm of p (a spot-sized window).
+  // Dose in a spot-sized disc of radius_mm around p: pixels weighted by how far inside the disc
+  // their centres lie (anti-aliased edge one pixel wide), so the sum does not jump with p.
   double sum_disc(Vec2 p, double radius_mm) const;
   double total() const { return total_; }
   double pixel_mm() const { return pixel_mm_; }

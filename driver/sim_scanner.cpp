@@ -81,7 +81,11 @@ void SimScanner::follow(const ScanSample& s) {
   const double dt = options_.tick_s / n;
   const Vec2 from = cmd_, to{s.x_mm, s.y_mm};
   const double target_power = s.laser ? s.power / 255.0 : 0.0;
-  const double rise = options_.laser_rise_s > 0 ? 1 - std::exp(-dt / options_.laser_rise_s) : 1.0;
+  // First-order laser power p → target: after a sub-step p moves by `rise` of the gap, and its
+  // mean over the sub-step is target + (p − target)·`mean_share` (exact; both 1/0 when instant).
+  const double tr = options_.laser_rise_s;
+  const double rise = tr > 0 ? 1 - std::exp(-dt / tr) : 1.0;
+  const double mean_share = tr > 0 ? tr / dt * rise : 0.0;
   const double t0 = static_cast<double>(samples_) * options_.tick_s;
   laser_cmd_ = s.laser;
 
@@ -93,9 +97,8 @@ void SimScanner::follow(const ScanSample& s) {
     step_axis(axis_[1], cmd.y, dt);
     const Vec2 p1 = beam();
 
-    const double p_start = power_;
+    const double mean_power = target_power + (power_ - target_power) * mean_share;
     power_ += (target_power - power_) * rise;
-    const double mean_power = 0.5 * (p_start + power_);
     if (mean_power > 0) dose_.deposit_segment(p0, p1, mean_power * dt);
     record_lit(p0, p1, power_ >= 0.5);
     if (options_.probe) options_.probe(t0 + (j + 1) * dt, p1, power_);

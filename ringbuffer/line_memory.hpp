@@ -33,6 +33,7 @@ class LineMemory {
   // Producer: append all samples in order, waiting while full. Returns false if aborted before
   // all were stored (those already stored stay stored).
   bool push(std::span<const T> samples) {
+    if (aborted_.load(std::memory_order_acquire)) return false;
     Backoff backoff;
     while (!samples.empty()) {
       if (aborted_.load(std::memory_order_acquire)) return false;

@@ -66,6 +66,9 @@ double DoseRaster::sum_disc(Vec2 p, double radius_mm) const {
   const double r = radius_mm / pixel_mm_;
   const double cx = p.x / pixel_mm_, cy = p.y / pixel_mm_;
   const double reach = r + 0.5;
+  const double inner2 = r > 0.5 ? (r - 0.5) * (r - 0.5) : 0.0;
+  std::uint64_t last_key = UINT64_MAX;
+  const Tile* last_tile = nullptr;
   const auto iy0 = static_cast<std::int64_t>(std::ceil(cy - reach));
   const auto iy1 = static_cast<std::int64_t>(std::floor(cy + reach));
   double sum = 0;
@@ -74,14 +77,24 @@ double DoseRaster::sum_disc(Vec2 p, double radius_mm) const {
     const double half = std::sqrt(std::max(0.0, reach * reach - dy * dy));
     const auto ix0 = static_cast<std::int64_t>(std::ceil(cx - half));
     const auto ix1 = static_cast<std::int64_t>(std::floor(cx + half));
-    // One tile lookup per run of the row inside a tile (sum_disc runs in quality loops).
+    // One tile lookup per run of the row inside a tile, remembered across rows (sum_disc runs
+    // in quality loops; a disc rarely spans more than two tiles).
     for (std::int64_t ix = ix0; ix <= ix1;) {
       const std::int64_t run_end = std::min(ix1, (ix | (tile_size - 1)));
-      if (const float* row = find_pixel(ix, iy)) {
+      const std::uint64_t k = key(ix >> tile_bits, iy >> tile_bits);
+      if (k != last_key) {
+        const auto it = tiles_.find(k);
+        last_tile = it == tiles_.end() ? nullptr : it->second.get();
+        last_key = k;
+      }
+      if (last_tile) {
+        const float* row = &last_tile->dose[static_cast<std::size_t>(
+            ((iy & (tile_size - 1)) << tile_bits) | (ix & (tile_size - 1)))];
         for (std::int64_t k = 0; k <= run_end - ix; ++k) {
           const double dx = static_cast<double>(ix + k) - cx;
-          const double w = std::clamp(reach - std::sqrt(dx * dx + dy * dy), 0.0, 1.0);
-          sum += w * row[k];
+          const double d2 = dx * dx + dy * dy;
+          // Inside r − ½ the weight is 1; only the one-pixel rim needs the square root.
+          sum += d2 <= inner2 ? row[k] : std::clamp(reach - std::sqrt(d2), 0.0, 1.0) * row[k];
         }
       }
       ix = run_end + 1;

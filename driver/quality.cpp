@@ -9,7 +9,7 @@ namespace mark {
 namespace {
 
 constexpr double fine_cell_mm = 0.025;
-constexpr int fine_rings = 40;        // 1 mm; beyond that the coarse grid answers
+constexpr int fine_rings = static_cast<int>(1.0 / fine_cell_mm);  // 1 mm; beyond, the coarse grid
 constexpr double coarse_cell_mm = 1.0;
 constexpr double no_median_ratio = 1e9;  // reported when most of the strokes got no dose
 
@@ -27,25 +27,23 @@ struct StrokeSample {
 };
 
 struct Intended {
-  SegmentGrid fine{fine_cell_mm};
-  SegmentGrid coarse{coarse_cell_mm};
+  std::vector<Segment> segments;
   std::vector<Stroke> strokes;
   std::vector<std::uint32_t> stroke_of_segment;
   std::vector<StrokeSample> samples;
 };
 
-Intended index_intended(const std::vector<std::vector<Vec2>>& polylines, double step) {
+Intended collect_intended(const std::vector<std::vector<Vec2>>& polylines, double step) {
   Intended in;
   for (const auto& line : polylines) {
     if (line.empty()) continue;
-    const auto first = static_cast<std::uint32_t>(in.fine.size());
+    const auto first = static_cast<std::uint32_t>(in.segments.size());
     const auto stroke = static_cast<std::uint32_t>(in.strokes.size());
     // A single point is a dot: one zero-length segment.
     const std::size_t n = std::max<std::size_t>(line.size(), 2);
     for (std::size_t i = 1; i < n; ++i) {
       const Vec2 a = line[std::min(i - 1, line.size() - 1)], b = line[std::min(i, line.size() - 1)];
-      in.fine.add(a, b);
-      in.coarse.add(a, b);
+      in.segments.push_back({a, b});
       in.stroke_of_segment.push_back(stroke);
       const double len = norm(b - a);
       const int pieces = std::max(1, static_cast<int>(std::ceil(len / step)));
@@ -53,14 +51,19 @@ Intended index_intended(const std::vector<std::vector<Vec2>>& polylines, double 
         in.samples.push_back({a + ((k + 0.5) / pieces) * (b - a), len / pieces});
     }
     const bool closed = line.size() > 2 && norm(line.front() - line.back()) < 1e-9;
-    in.strokes.push_back({first, static_cast<std::uint32_t>(in.fine.size() - 1), closed});
+    in.strokes.push_back({first, static_cast<std::uint32_t>(in.segments.size() - 1), closed});
   }
   return in;
 }
 
-SegmentGrid::Nearest nearest_intended(const Intended& in, Vec2 p) {
-  SegmentGrid::Nearest n = in.fine.nearest(p, fine_rings);
-  if (std::isinf(n.distance)) n = in.coarse.nearest(p, 1 << 20);
+struct IntendedIndex {
+  SegmentGrid fine;
+  SegmentGrid coarse;
+};
+
+SegmentGrid::Nearest nearest_intended(const IntendedIndex& index, Vec2 p) {
+  SegmentGrid::Nearest n = index.fine.nearest(p, fine_rings);
+  if (std::isinf(n.distance)) n = index.coarse.nearest(p, 1 << 20);
   return n;
 }
 
@@ -68,7 +71,7 @@ SegmentGrid::Nearest nearest_intended(const Intended& in, Vec2 p) {
 double overshoot_mm(const Intended& in, const SegmentGrid::Nearest& n) {
   const Stroke& s = in.strokes[in.stroke_of_segment[n.segment]];
   if (s.closed) return 0;
-  const auto& seg = in.fine.segment(n.segment);
+  const Segment& seg = in.segments[n.segment];
   const double len = norm(seg.b - seg.a);
   double beyond = 0;
   if (n.segment == s.first_segment && n.t < 0) beyond = std::max(beyond, -n.t * len);
@@ -88,14 +91,16 @@ double median(std::vector<double> v) {
 Quality evaluate_quality(const std::vector<std::vector<Vec2>>& intended_polylines,
                          const LitPaths& lit, const DoseRaster& dose, QualityOptions options) {
   Quality q;
-  const Intended in = index_intended(intended_polylines, options.sample_step_mm);
+  const Intended in = collect_intended(intended_polylines, options.sample_step_mm);
   if (in.samples.empty()) return q;
+  const IntendedIndex index{SegmentGrid(in.segments, fine_cell_mm),
+                            SegmentGrid(in.segments, coarse_cell_mm)};
 
   // Deviation and overshoot of every lit position.
   double sum_sq = 0, worst = 0, overshoot = 0;
   for (const auto& run : lit.runs)
     for (const Vec2& p : run) {
-      const SegmentGrid::Nearest n = nearest_intended(in, p);
+      const SegmentGrid::Nearest n = nearest_intended(index, p);
       worst = std::max(worst, n.distance);
       sum_sq += n.distance * n.distance;
       overshoot = std::max(overshoot, overshoot_mm(in, n));
@@ -107,9 +112,12 @@ Quality evaluate_quality(const std::vector<std::vector<Vec2>>& intended_polyline
   q.overshoot_um = overshoot * 1e3;
 
   // Coverage: intended length within the radius of a lit path (segments between lit points).
-  SegmentGrid lit_grid(std::max(options.coverage_radius_mm, fine_cell_mm));
+  std::vector<Segment> lit_segments;
+  lit_segments.reserve(q.lit_points);
   for (const auto& run : lit.runs)
-    for (std::size_t i = 0; i < run.size(); ++i) lit_grid.add(run[i == 0 ? 0 : i - 1], run[i]);
+    for (std::size_t i = 0; i < run.size(); ++i) lit_segments.push_back({run[i == 0 ? 0 : i - 1], run[i]});
+  const SegmentGrid lit_grid(std::move(lit_segments),
+                             std::max(options.coverage_radius_mm, fine_cell_mm));
   double covered = 0, total = 0;
   for (const StrokeSample& s : in.samples) {
     total += s.weight;
@@ -119,10 +127,8 @@ Quality evaluate_quality(const std::vector<std::vector<Vec2>>& intended_polyline
 
   // Dose along the strokes relative to an ideal constant-speed mark of the same strokes.
   DoseRaster ideal(dose.pixel_mm());
-  for (std::uint32_t i = 0; i < in.fine.size(); ++i) {
-    const auto& seg = in.fine.segment(i);
+  for (const Segment& seg : in.segments)
     ideal.deposit_segment(seg.a, seg.b, std::max(norm(seg.b - seg.a), 1e-9));
-  }
   std::vector<double> ratio;
   ratio.reserve(in.samples.size());
   for (const StrokeSample& s : in.samples) {

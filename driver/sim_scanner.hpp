@@ -32,7 +32,7 @@ struct SimScannerOptions {
   double laser_rise_s = 0;          // first-order rise/fall time constant of the laser power; 0 = instant
   double pixel_mm = 0.005;          // dose raster pixel
   bool record_lit_paths = true;     // keep the lit beam path (for quality figures)
-  double lit_path_spacing_mm = 0.002;  // recorded lit points at most this far apart (roughly)
+  double lit_path_spacing_mm = 0.004;  // lit points kept about this far apart (≤ 1 per sub-step)
   // Called at every sub-step with the device time, beam position and effective laser power
   // (0..1). For validation tests; leave empty otherwise.
   std::function<void(double t_s, Vec2 beam, double power)> probe;

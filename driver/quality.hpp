@@ -24,7 +24,8 @@ struct Quality {
   double coverage = 0;           // share of intended stroke length within coverage_radius of a lit path
   // Burn-in: the dose along the intended strokes divided by the dose an ideal constant-speed mark
   // of the same strokes would leave (so crossings and stroke ends, where the ideal is also
-  // different, do not count), then max / median of that ratio. 1 = perfectly even.
+  // different, do not count), then max / median of that ratio. 1 = perfectly even; 1e9 when
+  // more than half of the stroke length got no dose at all (the median is 0).
   double dose_ratio_max = 0;
   double overshoot_um = 0;       // furthest lit position beyond the end of an open stroke
   std::size_t lit_points = 0;    // lit positions evaluated (0: nothing was lit; coverage is 0)

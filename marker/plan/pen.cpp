@@ -42,8 +42,11 @@ Pen default_pen(CornerStrategy strategy, double tracking_error_s, double mark_sp
       pen.laser_on_delay_s = tau;
       pen.laser_off_delay_s = tau;
       pen.blank_angle_deg = rules.blank_angle_deg;
-      pen.run_in_mm = rules.run_in * mark_speed_mm_s * tau;
+      if (rules.run_in) pen.run_in_mm = *rules.run_in * mark_speed_mm_s * tau;
+      pen.min_run_in_mm = rules.min_run_in * mark_speed_mm_s * tau;
       pen.run_out_mm = rules.run_out * mark_speed_mm_s * tau;
+      pen.settle_mm = rules.settle_um * 1e-3;
+      pen.tracking_error_s = tau;
       pen.join_speed_mm_s = jump_speed_mm_s;
       break;
     case CornerStrategy::delays:
@@ -52,6 +55,8 @@ Pen default_pen(CornerStrategy strategy, double tracking_error_s, double mark_sp
       pen.jump_delay_s = rules.jump * tau;
       pen.mark_delay_s = rules.mark * tau;
       pen.polygon_delay_s = rules.polygon * tau;
+      pen.jump_settle_mm = rules.jump_settle_um * 1e-3;
+      pen.tracking_error_s = tau;
       break;
     case CornerStrategy::none:
       break;

@@ -13,6 +13,11 @@ bool PlanBuilder::jump_to(const Point& target) {
   return true;
 }
 
+Point PlanBuilder::velocity() const {
+  if (out.empty() || out.back().kind == CommandKind::dwell) return {0, 0};
+  return out.back().speed_mm_s * out.back().path.tangent_at(1.0);
+}
+
 double turn_angle_rad(const Element& a, const Element& b) {
   const double c = a.tangent_at(1.0).dot(b.tangent_at(0.0));
   return std::acos(std::clamp(c, -1.0, 1.0));

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "marker/plan/settle_model.hpp"
 #include "marker/plan/plan.hpp"
 #include "marker/plan/plan_builder.hpp"
 
@@ -32,8 +33,7 @@ void plan_stroke_blanking(PlanBuilder& b, const Stroke& stroke) {
   const Pen& pen = b.pen;
   const double limit_rad = pen.blank_angle_deg * std::numbers::pi / 180.0;
   const double step_mm = pen.mark_speed_mm_s * pen.tick_s;
-  const double in_ticks = std::round(pen.run_in_mm / step_mm);
-  const double out_ticks = std::round(pen.run_out_mm / step_mm);
+  const double out_ticks = std::ceil(pen.run_out_mm / step_mm - 1e-9);
   const double join_speed = pen.join_speed_mm_s > 0 ? pen.join_speed_mm_s : pen.jump_speed_mm_s;
   const std::vector<Element>& els = stroke.elements;
 
@@ -42,8 +42,15 @@ void plan_stroke_blanking(PlanBuilder& b, const Stroke& stroke) {
     const double v = whole_tick_speed(e, pen.mark_speed_mm_s, pen.tick_s);
     const bool starts_run = i == 0 || turn_angle_rad(els[i - 1], e) > limit_rad;
     if (starts_run) {
-      const double len = in_ticks * v * pen.tick_s;
-      const Point from = e.start() - len * e.tangent_at(0.0);
+      const Point dir = e.tangent_at(0.0);
+      const double want =
+          pen.run_in_mm ? *pen.run_in_mm
+                        : settled_run_in_mm({b.at, b.velocity(), e.start(), dir, v,
+                                             join_speed, pen.tracking_error_s, pen.settle_mm,
+                                             pen.min_run_in_mm});
+      // Whole ticks at the element's speed, rounded up so the settling is not cut short.
+      const double len = std::ceil(want / (v * pen.tick_s) - 1e-9) * v * pen.tick_s;
+      const Point from = e.start() - len * dir;
       if (i == 0) {
         b.jump_to(from);
       } else if ((from - b.at).norm() > kJoinTolerance_mm) {

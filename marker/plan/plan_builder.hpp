@@ -17,6 +17,8 @@ struct PlanBuilder {
 
   // A jump from the current position, unless already there. Returns whether it jumped.
   bool jump_to(const Point& target);
+  // Commanded velocity at the end of the last command (zero at rest or after a dwell), mm/s.
+  Point velocity() const;
   void move(const Command& c) {
     out.push_back(c);
     at = c.end();

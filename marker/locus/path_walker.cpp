@@ -23,7 +23,7 @@ void PathWalker::start(const Element& e, std::uint32_t steps) {
                         },
                         [&](const EllipticalArc&) {
                           table_.build(e);
-                          cursor_ = {};
+                          cursor_ = 0;
                           ds_ = table_.length() / steps;
                         }},
              e.geometry());

@@ -30,7 +30,7 @@ class PathWalker {
     return {p0_.x() + r_ * cos_, p0_.y() + r_ * sin_};
   }
   Point ellipse_step(std::uint32_t j) {
-    return table_.point_at(table_.theta_at(static_cast<double>(j) * ds_, cursor_));
+    return table_.point_at(static_cast<double>(j) * ds_, cursor_);
   }
   const Point& end() const { return end_; }
 
@@ -54,7 +54,7 @@ class PathWalker {
   double r_ = 0, cos_ = 1, sin_ = 0, rot_c_ = 1, rot_s_ = 0;  // arc
   double ds_ = 0;    // ellipse: arc length per step
   EllipseTable table_;
-  EllipseTable::Cursor cursor_;
+  std::size_t cursor_ = 0;
 };
 
 }  // namespace mark

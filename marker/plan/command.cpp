@@ -3,17 +3,23 @@
 namespace mark {
 
 Command Command::jump(const Point& from, const Point& to, double speed_mm_s) {
-  return {CommandKind::jump, CommandRole::jump, Element::line(from, to, false), speed_mm_s, 0};
+  return {CommandKind::jump, CommandRole::jump, Element::line(from, to, false), speed_mm_s, 0,
+          (to - from).norm()};
 }
 
 Command Command::mark(const Element& element, double speed_mm_s, CommandRole role) {
+  return mark(element, speed_mm_s, role, element.length());
+}
+
+Command Command::mark(const Element& element, double speed_mm_s, CommandRole role,
+                      double length_mm) {
   static constexpr CommandKind kinds[] = {CommandKind::line, CommandKind::arc,
                                           CommandKind::ellipse};
-  return {kinds[static_cast<int>(element.kind())], role, element, speed_mm_s, 0};
+  return {kinds[static_cast<int>(element.kind())], role, element, speed_mm_s, 0, length_mm};
 }
 
 Command Command::dwell(const Point& at, std::uint32_t ticks, bool laser) {
-  return {CommandKind::dwell, CommandRole::delay, Element::line(at, at, laser), 0, ticks};
+  return {CommandKind::dwell, CommandRole::delay, Element::line(at, at, laser), 0, ticks, 0};
 }
 
 std::string_view to_string(CommandKind kind) {

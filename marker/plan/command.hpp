@@ -27,15 +27,20 @@ struct Command {
   Element path;                // for a dwell: a zero-length line at the dwell point
   double speed_mm_s = 0;       // jumps and marks
   std::uint32_t dwell_ticks = 0;
+  // The path's length, computed once (an ellipse's takes a quadrature); 0 for a dwell.
+  double length = 0;
 
   bool laser() const { return path.laser(); }
   Point start() const { return path.start(); }
   Point end() const { return path.end(); }
-  double length_mm() const { return kind == CommandKind::dwell ? 0.0 : path.length(); }
+  double length_mm() const { return length; }
 
   static Command jump(const Point& from, const Point& to, double speed_mm_s);
   // A lit (or, for blanking lines, unlit) element at the given speed; kind follows the element.
   static Command mark(const Element& element, double speed_mm_s, CommandRole role);
+  // The same with the element's length already known.
+  static Command mark(const Element& element, double speed_mm_s, CommandRole role,
+                      double length_mm);
   static Command dwell(const Point& at, std::uint32_t ticks, bool laser);
 };
 

@@ -13,6 +13,17 @@ bool PlanBuilder::jump_to(const Point& target) {
   return true;
 }
 
+Command PlanBuilder::mark(const Element& e, double speed_mm_s, CommandRole role) {
+  if (e.kind() != ElementKind::ellipse) return Command::mark(e, speed_mm_s, role);
+  const auto& g = std::get<EllipticalArc>(e.geometry());
+  for (const auto& [k, len] : ellipse_lengths)
+    if (k.rx == g.rx && k.ry == g.ry && k.start_param == g.start_param && k.sweep == g.sweep)
+      return Command::mark(e, speed_mm_s, role, len);
+  Command c = Command::mark(e, speed_mm_s, role);
+  ellipse_lengths.emplace_back(g, c.length);
+  return c;
+}
+
 Point PlanBuilder::velocity() const {
   if (out.empty() || out.back().kind == CommandKind::dwell) return {0, 0};
   return out.back().speed_mm_s * out.back().path.tangent_at(1.0);
@@ -48,7 +59,7 @@ Plan plan_strokes(const std::vector<Stroke>& ordered_strokes, const Pen& pen, co
   plan.home = home;
   plan.strokes = ordered_strokes.size();
   plan.jump_length_mm = jump_length_mm(ordered_strokes, home);
-  PlanBuilder b{plan.pen, plan.commands, home};
+  PlanBuilder b{plan.pen, plan.commands, home, {}};
   for (const Stroke& s : ordered_strokes) {
     switch (pen.corner) {
       case CornerStrategy::none: plan_stroke_plain(b, s); break;

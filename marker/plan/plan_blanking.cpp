@@ -21,8 +21,7 @@
 namespace mark {
 namespace {
 
-double whole_tick_speed(const Element& e, double speed_mm_s, double tick_s) {
-  const double len = e.length();
+double whole_tick_speed(double len, double speed_mm_s, double tick_s) {
   const double ticks = std::max(1.0, std::round(len / (speed_mm_s * tick_s)));
   return len / (ticks * tick_s);
 }
@@ -36,11 +35,13 @@ void plan_stroke_blanking(PlanBuilder& b, const Stroke& stroke) {
   const double out_ticks = std::ceil(pen.run_out_mm / step_mm - 1e-9);
   const double join_speed = pen.join_speed_mm_s > 0 ? pen.join_speed_mm_s : pen.jump_speed_mm_s;
   const std::vector<Element>& els = stroke.elements;
+  bool continues_smoothly = false;  // the previous element runs into this one without blanking
 
   for (std::size_t i = 0; i < els.size(); ++i) {
     const Element& e = els[i];
-    const double v = whole_tick_speed(e, pen.mark_speed_mm_s, pen.tick_s);
-    const bool starts_run = i == 0 || turn_angle_rad(els[i - 1], e) > limit_rad;
+    Command mark = b.mark(e, pen.mark_speed_mm_s, CommandRole::stroke);
+    const double v = mark.speed_mm_s = whole_tick_speed(mark.length, pen.mark_speed_mm_s, pen.tick_s);
+    const bool starts_run = i == 0 || !continues_smoothly;
     if (starts_run) {
       const Point dir = e.tangent_at(0.0);
       const double want =
@@ -60,8 +61,9 @@ void plan_stroke_blanking(PlanBuilder& b, const Stroke& stroke) {
       if (len > 0) b.move(Command::mark(Element::line(from, e.start(), false), v,
                                         CommandRole::run_in));
     }
-    b.move(Command::mark(e, v, CommandRole::stroke));
-    const bool ends_run = i + 1 == els.size() || turn_angle_rad(e, els[i + 1]) > limit_rad;
+    b.move(mark);
+    continues_smoothly = i + 1 < els.size() && turn_angle_rad(e, els[i + 1]) <= limit_rad;
+    const bool ends_run = !continues_smoothly;
     if (ends_run && out_ticks > 0) {
       const double len = out_ticks * v * pen.tick_s;
       b.move(Command::mark(Element::line(e.end(), e.end() + len * e.tangent_at(1.0), false), v,

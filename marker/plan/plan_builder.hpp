@@ -14,6 +14,12 @@ struct PlanBuilder {
   const Pen& pen;
   std::vector<Command>& out;
   Point at;
+  // Ellipse lengths by shape (axes, start and sweep; position and rotation do not change a
+  // length): an ellipse's length is a quadrature, and a serial number repeats its digits.
+  std::vector<std::pair<EllipticalArc, double>> ellipse_lengths;
+
+  // A mark command for `e` at `speed`, its length from the memo where it can be.
+  Command mark(const Element& e, double speed_mm_s, CommandRole role);
 
   // A jump from the current position, unless already there. Returns whether it jumped.
   bool jump_to(const Point& target);

@@ -40,7 +40,7 @@ void plan_stroke_delays(PlanBuilder& b, const Stroke& stroke) {
       const double phi = turn_angle_rad(stroke.elements[i - 1], stroke.elements[i]);
       b.dwell(pen.ticks(pen.polygon_delay_s * (1.0 - std::cos(phi))), true);
     }
-    b.move(Command::mark(stroke.elements[i], pen.mark_speed_mm_s, CommandRole::stroke));
+    b.move(b.mark(stroke.elements[i], pen.mark_speed_mm_s, CommandRole::stroke));
   }
   // The next jump waits at least until the delayed laser-off has happened: with SCANLAB's
   // starting values (mark τ, laser-off 1.2τ) the laser would otherwise still burn for 0.2τ while

@@ -7,7 +7,7 @@ namespace mark {
 void plan_stroke_plain(PlanBuilder& b, const Stroke& stroke) {
   b.jump_to(stroke.start());
   for (const Element& e : stroke.elements)
-    b.move(Command::mark(e, b.pen.mark_speed_mm_s, CommandRole::stroke));
+    b.move(b.mark(e, b.pen.mark_speed_mm_s, CommandRole::stroke));
 }
 
 }  // namespace mark

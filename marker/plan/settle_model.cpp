@@ -28,7 +28,7 @@ double settled_run_in_mm(const RunInRequest& r) {
     const double a = transient_mm(r.velocity_mm_s, v_join, t_join, v_in, r.tau_s);
     // The laser switches on τ after the run-in ends: k·τ + τ of decay in all.
     const double k_new = std::max(k_min, settle_time_s(a, r.settle_mm, r.tau_s) / r.tau_s - 1.0);
-    const bool done = std::abs(k_new - k) < 1e-3;
+    const bool done = std::abs(k_new - k) < 1e-2;  // the run-in is rounded up to ticks anyway
     k = k_new;
     if (done) break;
   }

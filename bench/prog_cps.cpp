@@ -48,12 +48,14 @@ struct Setup {
   CornerStrategy strategy;
   PenRules rules;
   std::string text = kCharacters;
+  double join_speed_mm_s = 0;  // 0: the pen's default (jump speed)
+  std::string font = kBuiltinFontName;
 };
 
 Trial mark_at(const Setup& setup, double speed_mm_s) {
   JobSpec spec;
   spec.text = setup.text;
-  spec.font = open_font(kBuiltinFontName);
+  spec.font = open_font(setup.font);
   spec.layout.height_mm = 1.0;
   spec.layout.align = Align::center;
   // Baseline 0.5 mm above the field centre, so no mark falls in x < 0 and y < 0 at the same
@@ -62,6 +64,8 @@ Trial mark_at(const Setup& setup, double speed_mm_s) {
   spec.layout.base = Point(0, 0.5);
   spec.head = setup.head;
   spec.pen = pen_for_head(setup.head, setup.strategy, speed_mm_s, 10e-6, setup.rules);
+  if (setup.join_speed_mm_s < 0) spec.pen.join_speed_mm_s = speed_mm_s;  // join at marking speed
+  else if (setup.join_speed_mm_s > 0) spec.pen.join_speed_mm_s = setup.join_speed_mm_s;
   JobOptions options;
   options.virtual_time = true;
   SimScanner scanner(simulator_options(spec));
@@ -112,6 +116,10 @@ int main(int argc, char** argv) {
   double speed = 0;
   PenRules rules;
   std::string text = kCharacters;
+  double join_speed = 0;
+  std::string font = kBuiltinFontName;
+  app.add_option("--font", font, "with --speed: mark in this font instead (diagnosis)");
+  app.add_option("--join-speed", join_speed, "with --speed: blanking join speed, mm/s (-1: marking speed)");
   app.add_flag("--short", quick, "coarser speed search (for CI)");
   app.add_flag("--json", json, "print rows {head, strategy, quality, speed_mm_s, cps} as JSON");
   app.add_option("--head", head_name, "only this head (SL10, SL14, cheap)");
@@ -141,7 +149,7 @@ int main(int argc, char** argv) {
     if (speed > 0) {
       for (const HeadModel& h : heads)
         for (CornerStrategy s : strategies) {
-          const Trial t = mark_at({h, s, rules, text}, speed);
+          const Trial t = mark_at({h, s, rules, text, join_speed, font}, speed);
           std::printf("%-6s %-9s %7.0f mm/s  max %6.1f µm  rms %5.1f µm  cov %.4f  dose %.3f  "
                       "over %5.1f µm  %.4f s  %6.0f cps\n",
                       h.name.c_str(), std::string(to_string(s)).c_str(), speed,

@@ -47,7 +47,10 @@ void plan_stroke_blanking(PlanBuilder& b, const Stroke& stroke) {
       const double want =
           pen.run_in_mm ? *pen.run_in_mm
                         : settled_run_in_mm({b.at, b.velocity(), e.start(), dir, v,
-                                             join_speed, pen.tracking_error_s, pen.settle_mm,
+                                             // a stroke is reached by a jump, a corner's
+                                             // run-in by the joining line
+                                             i == 0 ? pen.jump_speed_mm_s : join_speed,
+                                             pen.tracking_error_s, pen.settle_mm,
                                              pen.min_run_in_mm});
       // Whole ticks at the element's speed, rounded up so the settling is not cut short.
       const double len = std::ceil(want / (v * pen.tick_s) - 1e-9) * v * pen.tick_s;

@@ -22,6 +22,10 @@ class Command {
   CLI::App* sub_ = nullptr;
 };
 
+Command make_preview_command();
+Command make_layout_command();
+Command make_fonts_command();
+
 std::vector<Command> all_commands();
 
 }  // namespace mark::cli

@@ -1,0 +1,38 @@
+#pragma once
+// A Cairo drawing surface in field millimetres (y up) that writes itself as SVG or PNG, chosen by
+// the output file's extension. Shared by every preview (layout, mark, gcode, peen).
+#include <cairo.h>
+
+#include <string>
+
+#include "fonts/box.hpp"
+
+namespace mark {
+
+class Canvas {
+ public:
+  // `view` is the region of the field to show (mm); px_per_mm its scale.
+  Canvas(const std::string& path, const Box& view, double px_per_mm);
+  ~Canvas();
+  Canvas(const Canvas&) = delete;
+  Canvas& operator=(const Canvas&) = delete;
+
+  cairo_t* cr() { return cr_; }
+  // Line width in pixels regardless of the mm scale.
+  void set_line_px(double px);
+  void set_dash_px(double on_px, double off_px);
+  // Writes the file; throws InputError naming it on failure.
+  void finish();
+
+ private:
+  std::string temp_path() const;
+
+  std::string path_;
+  bool png_ = false;
+  bool finished_ = false;
+  double px_per_mm_;
+  cairo_surface_t* surface_ = nullptr;
+  cairo_t* cr_ = nullptr;
+};
+
+}  // namespace mark

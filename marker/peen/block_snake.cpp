@@ -24,6 +24,7 @@ class CharMatrix {
       min_col = std::min(min_col, c.col), max_col = std::max(max_col, c.col);
       min_row = std::min(min_row, c.row), max_row = std::max(max_row, c.row);
     }
+    origin_ = {min_col, min_row};
     cols_ = max_col - min_col + 1;
     rows_ = max_row - min_row + 1;
     cells_.resize(static_cast<std::size_t>(cols_) * static_cast<std::size_t>(rows_));
@@ -51,9 +52,12 @@ class CharMatrix {
   }
   const std::vector<std::size_t>& dots(int col, int row) const { return cells_[index(col, row)]; }
   void strike(int col, int row) { struck_[index(col, row)] = true; }
+  // The character's own cell for matrix position (col, row).
+  DotCell cell(int col, int row) const { return {col + origin_.col, row + origin_.row}; }
 
  private:
   std::size_t index(int col, int row) const { return static_cast<std::size_t>(row * cols_ + col); }
+  DotCell origin_;
   int cols_ = 0, rows_ = 0;
   std::vector<std::vector<std::size_t>> cells_;
   std::vector<bool> struck_;
@@ -61,8 +65,9 @@ class CharMatrix {
 
 class BlockSnake {
  public:
-  BlockSnake(const DotText& text, const std::vector<std::size_t>& dots, PeenPlan& plan)
-      : text_(text), m_(text, dots), plan_(plan) {}
+  BlockSnake(const DotText& text, std::size_t character, const std::vector<std::size_t>& dots,
+             bool corners, PeenPlan& plan)
+      : text_(text), character_(character), m_(text, dots), corners_(corners), plan_(plan) {}
 
   void run() {
     while (const std::optional<DotCell> start = search_start()) {  // step 1
@@ -109,8 +114,24 @@ class BlockSnake {
     }
   }
 
+  // The head's way to a block's start point: along the matrix's Y, then along its X (one axis at
+  // a time, like the rest of the track), with a stop at the corner.
+  void go_to_start(DotCell start) {
+    if (!corners_) return;
+    const Point from = plan_.stops.empty() ? plan_.home_mm : plan_.stops.back().pos_mm;
+    const Affine& frame = text_.cell_frames.at(character_);
+    const Point from_cell = frame.inverse() * from;
+    const DotCell target = m_.cell(start.col, start.row);
+    const Point corner = frame * Point(from_cell.x(), target.row);
+    // No corner when the way is already along one axis.
+    const double tol = 1e-3 * text_.pitch_mm;
+    if ((corner - from).norm() > tol && (corner - frame * Point(target.col, target.row)).norm() > tol)
+      plan_.stops.push_back({corner, std::nullopt});
+  }
+
   // Steps 2–5 for one block.
   void trace_block(DotCell start) {
+    go_to_start(start);
     int row = start.row;
     int x = start.col;  // the head's column
     Run run = m_.run_at(x, row);
@@ -145,6 +166,10 @@ class BlockSnake {
       ++row;  // the one-way Y step; the head keeps column X2
       x = x2;
       run = *next;
+      // The track moves one axis at a time: when the step down lands beside the run, the head
+      // turns there (a stop without a strike) before running along the row.
+      if (corners_ && (x < run.left || x > run.right))
+        plan_.stops.push_back({text_.cell_position(character_, m_.cell(x, row)), std::nullopt});
     }
   }
 
@@ -167,7 +192,9 @@ class BlockSnake {
   }
 
   const DotText& text_;
+  std::size_t character_;
   CharMatrix m_;
+  bool corners_;
   PeenPlan& plan_;
   std::vector<DotCell> stack_;  // next-block start points
   int dir_ = 1;                 // last direction of travel along X
@@ -175,16 +202,14 @@ class BlockSnake {
 
 }  // namespace
 
-PeenPlan plan_block_snake(const DotText& text, const Point& home_mm) {
+PeenPlan plan_block_snake(const DotText& text, const Point& home_mm, bool one_axis_at_a_time) {
   PeenPlan plan;
   plan.planner = "block";
   plan.home_mm = home_mm;
   std::vector<std::vector<std::size_t>> by_char(text.characters);
   for (std::size_t i = 0; i < text.dots.size(); ++i) by_char.at(text.dots[i].character).push_back(i);
-  for (const std::vector<std::size_t>& dots : by_char) {
-    if (dots.empty()) continue;
-    BlockSnake(text, dots, plan).run();
-  }
+  for (std::size_t c = 0; c < by_char.size(); ++c)
+    if (!by_char[c].empty()) BlockSnake(text, c, by_char[c], one_axis_at_a_time, plan).run();
   return plan;
 }
 

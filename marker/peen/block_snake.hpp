@@ -19,14 +19,19 @@
 //  6. When the block ends, pop start points (skipping any struck since) and go to 2; when the
 //     stack is empty, go back to 1.
 //
-// The head moves straight from strike to strike (both axes together); where the patent's track
-// steps down into an empty cell and then along the row, ours makes the same visit in one move.
+// The track moves one axis at a time, as the patent's does (every track point is one step in X
+// or one step in Y from the last, and the blocks' tracks join end to end into the character's):
+// a step down that lands beside the next row's run is a corner where the head stops before
+// running along the row, and the way to a block's start point goes along Y, then along X, with a
+// stop at the corner. A run along a row, and the way back past a two-way point, is one move.
 #include "marker/peen/dot_text.hpp"
 #include "marker/peen/peen_plan.hpp"
 
 namespace mark {
 
 // Home is `home_mm` (the window's top-left corner in the planners' common setup).
-PeenPlan plan_block_snake(const DotText& text, const Point& home_mm);
+// `one_axis_at_a_time` false drops the corner stops (both axes move together everywhere): not the
+// patent's track, but it shows how much of the gap to the optimised planner the corners make.
+PeenPlan plan_block_snake(const DotText& text, const Point& home_mm, bool one_axis_at_a_time = true);
 
 }  // namespace mark

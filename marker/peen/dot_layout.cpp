@@ -16,8 +16,14 @@ DotText layout_dot_text(std::string_view utf8_text, const DotFont& font,
     const ShapedGlyph& shape = figure.shapes.at(g.shape);
     // Field mm → font units (dot pitches): undoes rotation, translation, scale, width factor,
     // shear and mirror at once, so each dot's cell comes back exactly.
-    const Affine to_font = (g.placement() * shape.from_font).inverse();
+    const Affine font_to_field = g.placement() * shape.from_font;
+    const Affine to_font = font_to_field.inverse();
     const bool mirrored = shape.from_font.linear().determinant() < 0;
+    // Cell (col, row) as seen → font units: rows count down from the top row; a mirrored
+    // character's columns count from the font's right.
+    Affine cell_to_font = Affine::Identity();
+    cell_to_font.linear() << (mirrored ? -1.0 : 1.0), 0.0, 0.0, -1.0;
+    cell_to_font.translation() = Point(mirrored ? font.columns() - 1 : 0, font.rows() - 1);
     bool any = false;
     for (const Element& e : g.elements) {
       if (!e.laser()) continue;
@@ -30,7 +36,9 @@ DotText layout_dot_text(std::string_view utf8_text, const DotFont& font,
       out.dots.push_back({pos, out.characters, {col, row}});
       any = true;
     }
-    if (any) ++out.characters;
+    if (!any) continue;
+    out.cell_frames.push_back(font_to_field * cell_to_font);
+    ++out.characters;
   }
   return out;
 }

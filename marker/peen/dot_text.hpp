@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "fonts/box.hpp"
+#include "fonts/element.hpp"
 #include "marker/peen/dot_font.hpp"
 
 namespace mark {
@@ -20,6 +20,13 @@ struct DotText {
   std::vector<Dot> dots;
   std::size_t characters = 0;  // characters that carry at least one dot
   double pitch_mm = 0;         // distance between neighbouring rows of dots (the snakes' row step)
+  // Per character: cell (col, row) → field mm of the cell's centre. The block snake needs it for
+  // the cells its track passes without a dot (the corner after a step down).
+  std::vector<Affine> cell_frames;
+
+  Point cell_position(std::size_t character, const DotCell& c) const {
+    return cell_frames.at(character) * Point(c.col, c.row);
+  }
 
   Box bounds() const {
     Box b;

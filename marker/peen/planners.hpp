@@ -23,6 +23,7 @@ std::optional<PlannerKind> parse_planner(std::string_view name);
 struct PeenSetup {
   Box window;
   GantryConfig gantry;
+  bool block_one_axis_at_a_time = true;  // see plan_block_snake
 };
 
 // The dots' bounding box: the smallest window, the most favourable to the whole-window snake.

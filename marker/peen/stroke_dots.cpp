@@ -87,6 +87,11 @@ DotText dots_along_strokes(const Figure& figure, double pitch_mm) {
       out.dots[i].cell.col -= min_col;
       out.dots[i].cell.row -= min_row;
     }
+    // Cell (col, row) → glyph mm ((col + min_col)·pitch, −(row + min_row)·pitch) → field mm.
+    Affine cell_to_local = Affine::Identity();
+    cell_to_local.linear() << pitch_mm, 0.0, 0.0, -pitch_mm;
+    cell_to_local.translation() = Point(min_col * pitch_mm, -min_row * pitch_mm);
+    out.cell_frames.push_back(g.placement() * cell_to_local);
     ++out.characters;
   }
   return out;

@@ -7,8 +7,10 @@
 
 namespace mark {
 
-// Home is the window's top-left corner. Rows run from the window's top edge down to its bottom
-// edge every text.pitch_mm; each dot belongs to the nearest row. Dots must lie in the window.
+// Home is the window's top-left corner. Rows lie every text.pitch_mm on the dots' own row grid,
+// from the highest one inside the window down to the lowest; each dot belongs to the nearest row
+// and every row is swept from one side edge of the window to the other. Dots must lie in the
+// window.
 PeenPlan plan_window_snake(const DotText& text, const Box& window);
 
 }  // namespace mark

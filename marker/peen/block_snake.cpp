@@ -66,8 +66,9 @@ class CharMatrix {
 class BlockSnake {
  public:
   BlockSnake(const DotText& text, std::size_t character, const std::vector<std::size_t>& dots,
-             bool corners, PeenPlan& plan)
-      : text_(text), character_(character), m_(text, dots), corners_(corners), plan_(plan) {}
+             const Box& window, bool corners, PeenPlan& plan)
+      : text_(text), character_(character), m_(text, dots), window_(window), corners_(corners),
+        plan_(plan) {}
 
   void run() {
     while (const std::optional<DotCell> start = search_start()) {  // step 1
@@ -114,24 +115,30 @@ class BlockSnake {
     }
   }
 
-  // The head's way to a block's start point: along the matrix's Y, then along its X (one axis at
-  // a time, like the rest of the track), with a stop at the corner.
-  void go_to_start(DotCell start) {
+  // One axis at a time toward matrix cell `target`: the corner where the head turns, along the
+  // matrix's Y first (the patent's one-way axis), else along its X first when that corner would
+  // leave the window (rotated or sheared characters), else straight.
+  void turn_toward(DotCell target) {
     if (!corners_) return;
     const Point from = plan_.stops.empty() ? plan_.home_mm : plan_.stops.back().pos_mm;
     const Affine& frame = text_.cell_frames.at(character_);
-    const Point from_cell = frame.inverse() * from;
-    const DotCell target = m_.cell(start.col, start.row);
-    const Point corner = frame * Point(from_cell.x(), target.row);
-    // No corner when the way is already along one axis.
+    const Point f = frame.inverse() * from;
+    const DotCell t = m_.cell(target.col, target.row);
+    const Point to = frame * Point(t.col, t.row);
     const double tol = 1e-3 * text_.pitch_mm;
-    if ((corner - from).norm() > tol && (corner - frame * Point(target.col, target.row)).norm() > tol)
-      plan_.stops.push_back({corner, std::nullopt});
+    for (const Point& c : {Point(f.x(), t.row), Point(t.col, f.y())}) {
+      const Point corner = frame * c;
+      if ((corner - from).norm() <= tol || (corner - to).norm() <= tol) return;  // one axis already
+      if (window_.contains(Box{corner, corner}, 1e-9)) {
+        plan_.stops.push_back({corner, std::nullopt});
+        return;
+      }
+    }
   }
 
   // Steps 2–5 for one block.
   void trace_block(DotCell start) {
-    go_to_start(start);
+    turn_toward(start);
     int row = start.row;
     int x = start.col;  // the head's column
     Run run = m_.run_at(x, row);
@@ -168,8 +175,8 @@ class BlockSnake {
       run = *next;
       // The track moves one axis at a time: when the step down lands beside the run, the head
       // turns there (a stop without a strike) before running along the row.
-      if (corners_ && (x < run.left || x > run.right))
-        plan_.stops.push_back({text_.cell_position(character_, m_.cell(x, row)), std::nullopt});
+      if (x < run.left) turn_toward({run.left, row});
+      if (x > run.right) turn_toward({run.right, row});
     }
   }
 
@@ -194,6 +201,7 @@ class BlockSnake {
   const DotText& text_;
   std::size_t character_;
   CharMatrix m_;
+  Box window_;
   bool corners_;
   PeenPlan& plan_;
   std::vector<DotCell> stack_;  // next-block start points
@@ -202,14 +210,14 @@ class BlockSnake {
 
 }  // namespace
 
-PeenPlan plan_block_snake(const DotText& text, const Point& home_mm, bool one_axis_at_a_time) {
+PeenPlan plan_block_snake(const DotText& text, const Box& window, bool one_axis_at_a_time) {
   PeenPlan plan;
   plan.planner = "block";
-  plan.home_mm = home_mm;
+  plan.home_mm = Point(window.min.x(), window.max.y());
   std::vector<std::vector<std::size_t>> by_char(text.characters);
   for (std::size_t i = 0; i < text.dots.size(); ++i) by_char.at(text.dots[i].character).push_back(i);
   for (std::size_t c = 0; c < by_char.size(); ++c)
-    if (!by_char[c].empty()) BlockSnake(text, c, by_char[c], one_axis_at_a_time, plan).run();
+    if (!by_char[c].empty()) BlockSnake(text, c, by_char[c], window, one_axis_at_a_time, plan).run();
   return plan;
 }
 

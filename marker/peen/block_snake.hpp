@@ -23,15 +23,17 @@
 // or one step in Y from the last, and the blocks' tracks join end to end into the character's):
 // a step down that lands beside the next row's run is a corner where the head stops before
 // running along the row, and the way to a block's start point goes along Y, then along X, with a
-// stop at the corner. A run along a row, and the way back past a two-way point, is one move.
+// stop at the corner (X first instead where that corner would leave the window, as it can for a
+// rotated or sheared character; straight where both would). A run along a row, and the way back
+// past a two-way point, is one move.
 #include "marker/peen/dot_text.hpp"
 #include "marker/peen/peen_plan.hpp"
 
 namespace mark {
 
-// Home is `home_mm` (the window's top-left corner in the planners' common setup).
+// Home is the window's top-left corner; turn points stay inside the window.
 // `one_axis_at_a_time` false drops the corner stops (both axes move together everywhere): not the
 // patent's track, but it shows how much of the gap to the optimised planner the corners make.
-PeenPlan plan_block_snake(const DotText& text, const Point& home_mm, bool one_axis_at_a_time = true);
+PeenPlan plan_block_snake(const DotText& text, const Box& window, bool one_axis_at_a_time = true);
 
 }  // namespace mark

@@ -63,7 +63,7 @@ PeenPlan plan_peen(const DotText& text, PlannerKind kind, const PeenSetup& setup
   const Point home = home_of(setup.window);
   switch (kind) {
     case PlannerKind::snake: return plan_window_snake(text, setup.window);
-    case PlannerKind::block: return plan_block_snake(text, home, setup.block_one_axis_at_a_time);
+    case PlannerKind::block: return plan_block_snake(text, setup.window, setup.block_one_axis_at_a_time);
     case PlannerKind::optimized: return plan_optimized(text, home, setup.gantry);
   }
   throw InputError("unknown planner");

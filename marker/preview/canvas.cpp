@@ -21,14 +21,19 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 }  // namespace
 
 Canvas::Canvas(const std::string& path, const Box& view, double px_per_mm)
-    : path_(path), px_per_mm_(px_per_mm) {
+    : Canvas(path, static_cast<int>(std::ceil(view.width() * px_per_mm)),
+             static_cast<int>(std::ceil(view.height() * px_per_mm))) {
+  set_view(view, 0, 0, px_per_mm);
+}
+
+Canvas::Canvas(const std::string& path, int w, int h) : path_(path), px_per_mm_(1) {
   if (ends_with(path, ".png")) {
     png_ = true;
   } else if (!ends_with(path, ".svg")) {
     throw InputError("preview file '" + path + "': the name must end in .svg or .png");
   }
-  const int w = std::max(1, static_cast<int>(std::ceil(view.width() * px_per_mm)));
-  const int h = std::max(1, static_cast<int>(std::ceil(view.height() * px_per_mm)));
+  w = std::max(1, w);
+  h = std::max(1, h);
   if (w > 20000 || h > 20000)
     throw InputError("preview file '" + path + "': " + std::to_string(w) + "×" + std::to_string(h) +
                      " px is too large; lower the scale");
@@ -36,16 +41,26 @@ Canvas::Canvas(const std::string& path, const Box& view, double px_per_mm)
                   : cairo_svg_surface_create(temp_path().c_str(), w, h);
   if (cairo_surface_status(surface_) != CAIRO_STATUS_SUCCESS) {
     cairo_surface_destroy(surface_);
+    surface_ = nullptr;
     throw InputError("preview file '" + path + "': cannot be created");
   }
   cr_ = cairo_create(surface_);
   cairo_set_source_rgb(cr_, 1, 1, 1);
   cairo_paint(cr_);
-  // Field millimetres, y up.
-  cairo_scale(cr_, px_per_mm, -px_per_mm);
-  cairo_translate(cr_, -view.min.x(), -view.max.y());
   cairo_set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+}
+
+void Canvas::set_view(const Box& view, double x_px, double y_px, double px_per_mm) {
+  px_per_mm_ = px_per_mm;
+  cairo_identity_matrix(cr_);
+  cairo_reset_clip(cr_);
+  cairo_rectangle(cr_, x_px, y_px, view.width() * px_per_mm, view.height() * px_per_mm);
+  cairo_clip(cr_);
+  // Field millimetres, y up.
+  cairo_translate(cr_, x_px, y_px);
+  cairo_scale(cr_, px_per_mm, -px_per_mm);
+  cairo_translate(cr_, -view.min.x(), -view.max.y());
 }
 
 Canvas::~Canvas() {

@@ -22,6 +22,12 @@ MoveCost::MoveCost(const std::vector<StepPoint>& points, const GantryConfig& gan
     x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
     y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
   }
+  // Up to a million steps per axis (8 MB): 110 mm at 9000 steps/mm. Beyond, no tables.
+  constexpr std::int64_t kMaxTable = 1 << 20;
+  if (x1 - x0 > kMaxTable || y1 - y0 > kMaxTable) {
+    direct_ = true;
+    return;
+  }
   x_s_ = axis_table(x1 - x0, gantry.x);
   y_s_ = axis_table(y1 - y0, gantry.y);
 }

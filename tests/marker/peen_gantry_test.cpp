@@ -7,6 +7,7 @@
 #include "fonts/error.hpp"
 #include "marker/peen/gantry.hpp"
 #include "marker/peen/gantry_run.hpp"
+#include "marker/peen/move_cost.hpp"
 
 namespace mark {
 namespace {
@@ -78,6 +79,19 @@ TEST(PeenGantry, RunReportsTimeTravelStrikesAndReversals) {
   EXPECT_EQ(r.log[3].duration_s, 0.0);
   EXPECT_EQ(r.log[3].strike, std::optional<std::size_t>(2));
   EXPECT_EQ(r.log[4].to, (StepPoint{0, 0}));
+}
+
+TEST(PeenGantry, PlannerCostIsTheSimulatorsMoveTime) {
+  for (double steps_per_mm : {40.0, 2e5}) {  // tabulated, and too fine to tabulate
+    GantryConfig g = round_numbers();
+    g.x.steps_per_mm = steps_per_mm;
+    const std::vector<StepPoint> pts = {to_steps(Point(0, 0), g), to_steps(Point(12.3, -4.1), g),
+                                        to_steps(Point(-7.7, 0.3), g)};
+    const MoveCost cost(pts, g);
+    for (std::size_t a = 0; a < pts.size(); ++a)
+      for (std::size_t b = 0; b < pts.size(); ++b)
+        EXPECT_DOUBLE_EQ(cost(a, b), move_time_s(pts[a], pts[b], g)) << steps_per_mm;
+  }
 }
 
 TEST(PeenGantry, ImpossibleParametersAreRefused) {

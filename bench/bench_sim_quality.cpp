@@ -77,9 +77,10 @@ void BM_Quality(benchmark::State& state) {
   const Job job = make_job(static_cast<double>(state.range(0)));
   SimScanner sim;
   sim.write(job.samples);
+  const QualityReference reference(job.intended);  // once per set of strokes, as a speed search would
   Quality q;
   for (auto _ : state) {
-    q = evaluate_quality(job.intended, sim.lit_paths(), sim.dose());
+    q = reference.evaluate(sim.lit_paths(), sim.dose());
     benchmark::ClobberMemory();  // (DoNotOptimize on a double member garbles it with GCC)
   }
   char label[160];
@@ -88,6 +89,15 @@ void BM_Quality(benchmark::State& state) {
   state.SetLabel(label);
 }
 BENCHMARK(BM_Quality)->ArgName("speed_mm_s")->Arg(1000)->Arg(3000)->Unit(benchmark::kMillisecond);
+
+void BM_QualityReference(benchmark::State& state) {
+  const Job job = make_job(1000);
+  for (auto _ : state) {
+    QualityReference reference(job.intended);
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_QualityReference)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace mark

@@ -1,6 +1,8 @@
 #pragma once
-// Where the beam really went while the laser was on: one polyline per continuous lit run,
-// points no further apart than the recording spacing (and every run's first and last point).
+// Where the beam really went while the laser was on (effective power ≥ half): one polyline per
+// continuous lit run, with its first and last point; in between, points about the recording
+// spacing apart but never more than one integration sub-step apart, so the segments between
+// them are the beam path.
 #include <cstddef>
 #include <vector>
 

@@ -2,8 +2,10 @@
 // Quality figures of a simulated mark against what was intended. The intended strokes come as
 // polylines densely sampled by the caller (≤ 5 µm apart, one per lit stroke; a polyline whose
 // last point equals its first is closed and has no ends). Spatial grids make every query local,
-// so the figures are cheap enough to evaluate in a speed search.
+// and a QualityReference prepares everything that depends only on the intended strokes once,
+// so a speed search can evaluate many marks of the same strokes cheaply.
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "driver/dose_raster.hpp"
@@ -31,6 +33,25 @@ struct Quality {
   std::size_t lit_points = 0;    // lit positions evaluated (0: nothing was lit; coverage is 0)
 };
 
+// The intended strokes, indexed once: grids, sample points and the ideal dose at each.
+class QualityReference {
+ public:
+  // pixel_mm must match the dose rasters evaluated later (SimScannerOptions::pixel_mm).
+  explicit QualityReference(const std::vector<std::vector<Vec2>>& intended_polylines,
+                            QualityOptions options = {}, double pixel_mm = 0.005);
+  ~QualityReference();
+  QualityReference(QualityReference&&) noexcept;
+  QualityReference& operator=(QualityReference&&) noexcept;
+
+  // Throws std::invalid_argument if the raster's pixel differs from the reference's.
+  Quality evaluate(const LitPaths& lit, const DoseRaster& dose) const;
+
+ private:
+  struct Data;
+  std::unique_ptr<Data> data_;
+};
+
+// One-off evaluation: QualityReference(intended, options, dose.pixel_mm()).evaluate(lit, dose).
 Quality evaluate_quality(const std::vector<std::vector<Vec2>>& intended_polylines,
                          const LitPaths& lit, const DoseRaster& dose, QualityOptions options = {});
 

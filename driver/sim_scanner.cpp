@@ -45,9 +45,11 @@ void SimScanner::write(std::span<const ScanSample> block) {
     throw;
   }
   for (const ScanSample& s : block) follow(s);
+  trail_.flush();  // the raster is complete after every block
 }
 
 void SimScanner::halt() noexcept {
+  trail_.flush();
   halted_ = true;
   laser_cmd_ = false;
   power_ = 0;
@@ -99,7 +101,10 @@ void SimScanner::follow(const ScanSample& s) {
 
     const double mean_power = target_power + (power_ - target_power) * mean_share;
     power_ += (target_power - power_) * rise;
-    if (mean_power > 0) dose_.deposit_segment(p0, p1, mean_power * dt);
+    if (mean_power > 0)
+      trail_.add(p0, p1, mean_power * dt);
+    else
+      trail_.flush();
     record_lit(p0, p1, power_ >= 0.5);
     if (options_.probe) options_.probe(t0 + (j + 1) * dt, p1, power_);
   }

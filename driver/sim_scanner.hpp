@@ -17,6 +17,7 @@
 #include <span>
 
 #include "driver/dose_raster.hpp"
+#include "driver/dose_trail.hpp"
 #include "driver/head_model.hpp"
 #include "driver/lit_paths.hpp"
 #include "driver/vec2.hpp"
@@ -76,6 +77,7 @@ class SimScanner : public Sink<ScanSample> {
   bool was_lit_ = false;
   std::uint64_t samples_ = 0;
   DoseRaster dose_;
+  DoseTrail trail_{dose_};
   LitPaths lit_;
 };
 

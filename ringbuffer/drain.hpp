@@ -9,6 +9,10 @@
 // Virtual time drains as fast as the sink accepts; an empty, unclosed memory then means "wait",
 // never underrun, because no deadline exists.
 //
+// The filter (e.g. the laser delay line) sees only samples from the memory: hold samples are
+// added after it, so an underrun switches the laser off at once and the filter's ticks resume
+// where they stopped.
+//
 // End: when the memory is closed and empty the drain sends the last (partial) block, then the
 // filter's flush tail (e.g. the pending delayed laser-off), and stops. On abort() or an
 // exception from the sink it calls sink.halt() (laser off), aborts the memory so the producer

@@ -8,6 +8,7 @@ std::vector<Command> all_commands() {
   c.push_back(make_layout_command());
   c.push_back(make_fonts_command());
   c.push_back(make_mark_command());
+  c.push_back(make_peen_command());
   return c;
 }
 

@@ -26,6 +26,7 @@ Command make_preview_command();
 Command make_layout_command();
 Command make_fonts_command();
 Command make_mark_command();
+Command make_peen_command();
 
 std::vector<Command> all_commands();
 

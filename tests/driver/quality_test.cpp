@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace mark {
 namespace {
@@ -121,6 +122,21 @@ TEST(Quality, FarStrayLightIsMeasuredExactly) {
   c.lit.runs = {c.intended[0], {{0.5, 5.0}}};  // a lit dot 5 mm away
   mark_evenly(c.dose, c.intended[0]);
   EXPECT_NEAR(c.eval().max_deviation_um, 5000, 1e-6);
+}
+
+TEST(Quality, PreparedReferenceGivesTheSameFiguresAndChecksThePixel) {
+  Case c;
+  c.intended = {dense({0, 0}, {2, 0}), dense({0, 1}, {1, 1})};
+  c.lit.runs = {dense({0, 0.004}, {2.03, 0.004})};
+  mark_evenly(c.dose, c.lit.runs[0]);
+  const QualityReference ref(c.intended);
+  const Quality a = ref.evaluate(c.lit, c.dose), b = c.eval();
+  EXPECT_EQ(a.max_deviation_um, b.max_deviation_um);
+  EXPECT_EQ(a.coverage, b.coverage);
+  EXPECT_EQ(a.dose_ratio_max, b.dose_ratio_max);
+  EXPECT_EQ(a.overshoot_um, b.overshoot_um);
+  EXPECT_NEAR(a.coverage, 2.0 / 3.0, 0.01);  // the second stroke was never lit
+  EXPECT_THROW(ref.evaluate(c.lit, DoseRaster(0.01)), std::invalid_argument);
 }
 
 TEST(Quality, NothingLitHasNoCoverage) {

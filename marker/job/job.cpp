@@ -104,10 +104,12 @@ SimScannerOptions simulator_options(const JobSpec& spec) {
   return o;
 }
 
-JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner) {
+JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,
+                            const QualityReference* reference) {
   JobResult result = run_job(spec, options, scanner);
-  result.quality = evaluate_quality(intended_polylines(result.job.figure), scanner.lit_paths(),
-                                    scanner.dose());
+  result.quality = reference ? reference->evaluate(scanner.lit_paths(), scanner.dose())
+                             : evaluate_quality(intended_polylines(result.job.figure),
+                                                scanner.lit_paths(), scanner.dose());
   return result;
 }
 

@@ -71,7 +71,9 @@ JobResult run_job(const JobSpec& spec, const JobOptions& options, Sink<ScanSampl
 // The simulated scanner for a spec: its head, its pen's tick, lit paths recorded.
 SimScannerOptions simulator_options(const JobSpec& spec);
 // Runs the job on that scanner and evaluates the quality figures against the figure's intended
-// strokes. The scanner keeps the dose for a preview.
-JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner);
+// strokes (against `reference` when given — it must be built from this spec's figure; a speed
+// search reuses one). The scanner keeps the dose for a preview.
+JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,
+                            const QualityReference* reference = nullptr);
 
 }  // namespace mark

@@ -30,6 +30,9 @@ CompiledJob compile_job(const JobSpec& spec) {
   check_pen(spec.pen, spec.head);
   CompiledJob job;
   job.figure = layout_text(spec.text, *spec.font, spec.layout);
+  // The letters themselves first, so the message says which part leaves the field.
+  if (!job.figure.bounds().empty())
+    require_inside(job.figure.bounds(), Field{spec.head.field_mm}, "the text layout");
   job.plan = plan_figure(job.figure, spec.pen, spec.order);
   check_plan(job.plan, spec.head);
   job.laser_on_ticks = spec.pen.ticks(spec.pen.laser_on_delay_s);

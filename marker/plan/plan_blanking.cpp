@@ -10,13 +10,19 @@
 // ticks, and its run-in and run-out run at that same speed for a whole number of ticks: then
 // every element boundary falls on a tick and the beam's speed does not change where the laser
 // switches, which is what the τ delay assumes.
+//
+// Lengths: the run-out is v·τ (the τ-delayed laser-off happens exactly as the lagging beam
+// crosses the end point; anything longer only costs time). The joining line runs at jump speed,
+// and each run-in is as long as the head's first-order model says the transient of the moves
+// before it needs to decay to the pen's settle_mm by the time the laser switches on (see
+// settle_model.hpp) — unless the pen fixes the run-in length.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "marker/plan/settle_model.hpp"
 #include "marker/plan/plan.hpp"
 #include "marker/plan/plan_builder.hpp"
+#include "marker/plan/settle_model.hpp"
 
 namespace mark {
 namespace {

@@ -18,7 +18,8 @@ std::uint64_t DoseRaster::key(std::int64_t tx, std::int64_t ty) {
 float* DoseRaster::pixel_ref(std::int64_t ix, std::int64_t iy) {
   const std::int64_t tx = ix >> tile_bits, ty = iy >> tile_bits;  // floor for negatives too
   const std::uint64_t k = key(tx, ty);
-  if (k != cached_key_) {
+  // The key of tile (−1, −1) is all ones, so the cache needs its own "empty" state.
+  if (!cached_tile_ || k != cached_key_) {
     auto& slot = tiles_[k];
     if (!slot) slot = std::make_unique<Tile>();
     cached_key_ = k;
@@ -67,7 +68,8 @@ double DoseRaster::sum_disc(Vec2 p, double radius_mm) const {
   const double cx = p.x / pixel_mm_, cy = p.y / pixel_mm_;
   const double reach = r + 0.5;
   const double inner2 = r > 0.5 ? (r - 0.5) * (r - 0.5) : 0.0;
-  std::uint64_t last_key = UINT64_MAX;
+  std::uint64_t last_key = 0;
+  bool looked_up = false;  // no key value can mean "none": tile (−1, −1) is all ones
   const Tile* last_tile = nullptr;
   const auto iy0 = static_cast<std::int64_t>(std::ceil(cy - reach));
   const auto iy1 = static_cast<std::int64_t>(std::floor(cy + reach));
@@ -82,10 +84,11 @@ double DoseRaster::sum_disc(Vec2 p, double radius_mm) const {
     for (std::int64_t ix = ix0; ix <= ix1;) {
       const std::int64_t run_end = std::min(ix1, (ix | (tile_size - 1)));
       const std::uint64_t k = key(ix >> tile_bits, iy >> tile_bits);
-      if (k != last_key) {
+      if (!looked_up || k != last_key) {
         const auto it = tiles_.find(k);
         last_tile = it == tiles_.end() ? nullptr : it->second.get();
         last_key = k;
+        looked_up = true;
       }
       if (last_tile) {
         const float* row = &last_tile->dose[static_cast<std::size_t>(

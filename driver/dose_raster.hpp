@@ -50,7 +50,7 @@ class DoseRaster {
   double total_ = 0;
   std::unordered_map<std::uint64_t, std::unique_ptr<Tile>> tiles_;
   // one-tile cache: consecutive deposits almost always hit the same tile
-  std::uint64_t cached_key_ = UINT64_MAX;
+  std::uint64_t cached_key_ = 0;  // meaningful only while cached_tile_ is set
   Tile* cached_tile_ = nullptr;
 };
 

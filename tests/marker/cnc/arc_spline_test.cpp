@@ -87,15 +87,18 @@ TEST(ArcSpline, EllipsesBecomeBiarcsWithinTolerance) {
       double len = 0;
       for (const Element& a : s) {
         EXPECT_NE(a.kind(), ElementKind::ellipse);
-        if (a.kind() == ElementKind::arc) EXPECT_LE(std::abs(std::get<CircularArc>(a.geometry()).sweep), kPi + 1e-12);
+        if (a.kind() == ElementKind::arc) {
+          EXPECT_LE(std::abs(std::get<CircularArc>(a.geometry()).sweep), kPi + 1e-12);
+        }
         len += a.length();
       }
       EXPECT_NEAR(len, e.length(), 0.01 * e.length());
       // Tangent continuity where arcs meet (biarcs join smoothly; arcs too small for a
       // controller become chords, which turn at their joints).
       for (std::size_t k = 1; k < s.size(); ++k)
-        if (s[k].kind() == ElementKind::arc && s[k - 1].kind() == ElementKind::arc)
+        if (s[k].kind() == ElementKind::arc && s[k - 1].kind() == ElementKind::arc) {
           EXPECT_GT(s[k].tangent_at(0).dot(s[k - 1].tangent_at(1)), 0.999);
+        }
     }
   }
 }

@@ -109,7 +109,9 @@ TEST_P(DepressionRs274, RunsToTheEndAndCutsExactlyTheStrokes) {
     EXPECT_EQ(stats.inlined, 6u);
   } else {
     EXPECT_EQ(stats.calls + stats.inlined, 6u);
-    if (fit == Fit::linear) EXPECT_EQ(stats.calls, 6u);
+    if (fit == Fit::linear) {
+      EXPECT_EQ(stats.calls, 6u);
+    }
   }
 }
 

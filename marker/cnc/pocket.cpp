@@ -1,0 +1,123 @@
+#include "marker/cnc/pocket.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "marker/cnc/clipper_paths.hpp"
+
+namespace mark {
+namespace {
+
+using namespace ClipperLib;
+
+// One connected piece of an eroded region: its outer boundary and holes.
+struct Component {
+  Path outer;
+  Paths holes;
+  int level = 0;
+  std::vector<std::size_t> children;  // components one level deeper inside this one
+};
+
+void collect(const PolyNode& node, int level, std::vector<Component>& out) {
+  for (const PolyNode* child : node.Childs) {
+    if (child->IsHole()) continue;
+    Component c;
+    c.outer = child->Contour;
+    c.level = level;
+    for (const PolyNode* hole : child->Childs) {
+      c.holes.push_back(hole->Contour);
+      collect(*hole, level, out);  // islands inside holes
+    }
+    out.push_back(std::move(c));
+  }
+}
+
+bool inside_component(const Component& c, const IntPoint& p) {
+  if (PointInPolygon(p, c.outer) == 0) return false;
+  for (const Path& h : c.holes)
+    if (PointInPolygon(p, h) == 1) return false;
+  return true;
+}
+
+// Do segments ab and cd cross at a point inside both (touching does not count)?
+bool crosses(const Point& a, const Point& b, const Point& c, const Point& d) {
+  auto side = [](const Point& p, const Point& q, const Point& r) {
+    return (q.x() - p.x()) * (r.y() - p.y()) - (q.y() - p.y()) * (r.x() - p.x());
+  };
+  const double d1 = side(a, b, c), d2 = side(a, b, d), d3 = side(c, d, a), d4 = side(c, d, b);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+bool segment_inside(const Paths& region, const Point& a, const Point& b) {
+  if (!contains(region, (a + b) / 2)) return false;
+  for (const Path& path : region)
+    for (std::size_t k = 0; k < path.size(); ++k)
+      if (crosses(a, b, to_mm(path[k]), to_mm(path[(k + 1) % path.size()]))) return false;
+  return true;
+}
+
+void emit_component(std::vector<Component>& comps, std::size_t idx, std::vector<PocketLoop>& out) {
+  for (std::size_t child : comps[idx].children) emit_component(comps, child, out);
+  out.push_back({to_mm(comps[idx].outer), comps[idx].level});
+  for (const Path& h : comps[idx].holes) out.push_back({to_mm(h), comps[idx].level});
+}
+
+}  // namespace
+
+std::vector<PocketLoop> pocket_loops(const Paths& region, double stepover_mm, double arc_tol_mm) {
+  std::vector<Component> comps;
+  std::vector<std::size_t> first_of_level;
+  for (int level = 0;; ++level) {
+    ClipperOffset co(2.0, arc_tol_mm * kNmPerMm);
+    co.AddPaths(region, jtRound, etClosedPolygon);
+    PolyTree tree;
+    co.Execute(tree, -level * stepover_mm * kNmPerMm);
+    const std::size_t before = comps.size();
+    collect(tree, level, comps);
+    if (comps.size() == before) break;
+    first_of_level.push_back(before);
+    // Hang each new component under the component of the previous level that holds it.
+    if (level > 0)
+      for (std::size_t k = before; k < comps.size(); ++k)
+        for (std::size_t p = first_of_level[level - 1]; p < before; ++p)
+          if (inside_component(comps[p], comps[k].outer.front())) {
+            comps[p].children.push_back(k);
+            break;
+          }
+  }
+  std::vector<PocketLoop> out;
+  if (first_of_level.empty()) return out;
+  const std::size_t level0_end = first_of_level.size() > 1 ? first_of_level[1] : comps.size();
+  for (std::size_t k = 0; k < level0_end; ++k) emit_component(comps, k, out);
+  return out;
+}
+
+void append_pocket_pass(const std::vector<PocketLoop>& loops, const Paths& region, double z,
+                        const PocketMoves& m, Point& at, bool& at_depth, std::vector<ToolMove>& out) {
+  for (const PocketLoop& loop : loops) {
+    if (loop.points.size() < 2) continue;
+    // Enter the loop at its vertex nearest to the tool.
+    std::size_t start = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < loop.points.size(); ++k) {
+      const double d = (loop.points[k] - at).squaredNorm();
+      if (d < best) best = d, start = k;
+    }
+    const Point& p0 = loop.points[start];
+    if (at_depth && segment_inside(region, at, p0)) {
+      out.push_back(ToolMove::feed(p0.x(), p0.y(), z, m.feed_mm_min));
+    } else {
+      if (at_depth) out.push_back(ToolMove::rapid(at.x(), at.y(), m.safe_z_mm));
+      out.push_back(ToolMove::rapid(p0.x(), p0.y(), m.safe_z_mm));
+      out.push_back(ToolMove::feed(p0.x(), p0.y(), z, m.plunge_feed_mm_min));
+    }
+    for (std::size_t k = 1; k <= loop.points.size(); ++k) {
+      const Point& p = loop.points[(start + k) % loop.points.size()];
+      out.push_back(ToolMove::feed(p.x(), p.y(), z, m.feed_mm_min));
+    }
+    at = p0;
+    at_depth = true;
+  }
+}
+
+}  // namespace mark

@@ -3,6 +3,7 @@
 // elliptical arc that a transform makes round becomes a circular arc again.
 #include <Eigen/SVD>
 #include <cmath>
+#include <optional>
 
 #include "fonts/element.hpp"
 #include "fonts/overloaded.hpp"
@@ -49,10 +50,43 @@ Eigen::Matrix2d rotation_matrix(double a) {
   return r;
 }
 
+// A linear map that is a similarity: scale·R(angle), or scale·Refl(angle) when `reflect`, with
+// Refl(α) = R(α)·diag(1, −1).
+struct Similarity {
+  double scale;
+  double angle;
+  bool reflect;
+};
+
+std::optional<Similarity> as_similarity(const Eigen::Matrix2d& m) {
+  const double a = m(0, 0), b = m(1, 0), c = m(0, 1), d = m(1, 1);
+  const double scale = std::hypot(a, b);
+  const double tol = kRoundTol * scale;
+  if (scale == 0) return std::nullopt;
+  if (std::abs(c + b) <= tol && std::abs(d - a) <= tol) return Similarity{scale, std::atan2(b, a), false};
+  if (std::abs(c - b) <= tol && std::abs(d + a) <= tol) return Similarity{scale, std::atan2(b, a), true};
+  return std::nullopt;
+}
+
 }  // namespace
 
 Element Element::transformed(const Affine& transform) const {
   const Eigen::Matrix2d m = transform.linear();
+  // Layout places every glyph with a rotation and translation: keep that path free of the SVD.
+  if (const auto sim = as_similarity(m); sim && kind() != ElementKind::line) {
+    if (const auto* a = std::get_if<CircularArc>(&geometry_)) {
+      return sim->reflect ? arc(transform * a->center, sim->scale * a->radius,
+                                sim->angle - a->start_angle, -a->sweep, laser_)
+                          : arc(transform * a->center, sim->scale * a->radius,
+                                a->start_angle + sim->angle, a->sweep, laser_);
+    }
+    const auto& e = std::get<EllipticalArc>(geometry_);
+    // Refl(α)·R(β) = Refl(α − β) and Refl(γ)·diag(rx, ry)·(cos θ, sin θ) = R(γ)·diag(rx, ry)·(cos −θ, sin −θ).
+    return sim->reflect ? ellipse(transform * e.center, sim->scale * e.rx, sim->scale * e.ry,
+                                  sim->angle - e.rotation, -e.start_param, -e.sweep, laser_)
+                        : ellipse(transform * e.center, sim->scale * e.rx, sim->scale * e.ry,
+                                  e.rotation + sim->angle, e.start_param, e.sweep, laser_);
+  }
   return std::visit(
       Overloaded{
           [&](const Line& l) { return line(transform * l.start, transform * l.end, laser_); },

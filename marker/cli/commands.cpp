@@ -4,6 +4,10 @@ namespace mark::cli {
 
 std::vector<Command> all_commands() {
   std::vector<Command> c;
+  c.push_back(make_preview_command());
+  c.push_back(make_layout_command());
+  c.push_back(make_fonts_command());
+  c.push_back(make_peen_command());
   return c;
 }
 

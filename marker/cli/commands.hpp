@@ -22,6 +22,11 @@ class Command {
   CLI::App* sub_ = nullptr;
 };
 
+Command make_preview_command();
+Command make_layout_command();
+Command make_fonts_command();
+Command make_peen_command();
+
 std::vector<Command> all_commands();
 
 }  // namespace mark::cli

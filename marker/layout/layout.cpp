@@ -1,5 +1,213 @@
+// Text layout after the CNC paper's data processor: scale to the requested height, apply width
+// factor, font inclination (shear) and mirroring per letter, then fit the letters linearly, on an
+// inclined line, or on a circle. Each distinct character is shaped once; occurrences are placed
+// with a rotation and translation only, which keeps arcs circular and layout fast.
 #include "marker/layout/layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "fonts/error.hpp"
+#include "fonts/utf8.hpp"
+
 namespace mark {
-Figure layout_text(std::string_view, const StrokeFont&, const LayoutOptions&) { return {}; }
-void require_inside(const Box&, const Field&, std::string_view) {}
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+double radians(double deg) { return deg * kPi / 180.0; }
+
+void require_finite_positive(double v, const char* what) {
+  if (!std::isfinite(v) || v <= 0) {
+    std::ostringstream msg;
+    msg << what << " must be a positive number, got " << v;
+    throw InputError(msg.str());
+  }
 }
+
+void require_finite(double v, const char* what) {
+  if (!std::isfinite(v)) throw InputError(std::string(what) + " must be a finite number");
+}
+
+void validate(const LayoutOptions& o) {
+  require_finite_positive(o.height_mm, "character height");
+  require_finite_positive(o.width_factor, "width factor");
+  require_finite_positive(o.line_spacing, "line spacing");
+  require_finite(o.gap_mm, "letter gap");
+  require_finite(o.base.x(), "base point x");
+  require_finite(o.base.y(), "base point y");
+  require_finite(o.angle_deg, "text angle");
+  require_finite(o.italic_deg, "italic angle");
+  if (std::abs(o.italic_deg) >= 80)
+    throw InputError("italic angle must lie between -80 and 80 degrees, got " +
+                     std::to_string(o.italic_deg));
+  if (o.circle) {
+    require_finite_positive(o.circle->radius_mm, "circle radius");
+    require_finite(o.circle->center.x(), "circle centre x");
+    require_finite(o.circle->center.y(), "circle centre y");
+    if (o.circle->start_angle_deg) require_finite(*o.circle->start_angle_deg, "start angle");
+    if (o.angle_deg != 0)
+      throw InputError("a text angle cannot be combined with circular fitting; use a start angle");
+  }
+}
+
+// Shapes each distinct character once and remembers its index.
+class Shaper {
+ public:
+  Shaper(const StrokeFont& font, const LayoutOptions& o, Figure& figure)
+      : font_(font), options_(o), figure_(figure) {
+    const double cap = font.metrics().standard_height;
+    if (!(cap > 0))
+      throw InputError("font '" + font.name() + "' has no usable standard height");
+    scale_x_ = o.height_mm / cap * o.width_factor;
+    scale_y_ = o.height_mm / cap;
+  }
+
+  std::size_t shape(char32_t cp) {
+    for (std::size_t i = 0; i < figure_.shapes.size(); ++i)
+      if (figure_.shapes[i].code_point == cp) return i;
+    ShapedGlyph s;
+    s.code_point = cp;
+    const Glyph* glyph = font_.find(cp);
+    if (!glyph && cp == U' ') {
+      s.advance_mm = font_.metrics().word_spacing * scale_x_;
+    } else {
+      if (!glyph) glyph = options_.replace_missing ? &font_.glyph_or_replacement(cp) : &font_.glyph(cp);
+      s.advance_mm = glyph->advance * scale_x_;
+      // Shear (font inclination) then scale: x' = sx·x + sy·tan(italic)·y, y' = sy·y.
+      Eigen::Matrix2d m;
+      m << scale_x_, scale_y_ * std::tan(radians(options_.italic_deg)), 0, scale_y_;
+      s.from_font.linear() = m;
+      s.from_font.translation().setZero();
+      if (options_.mirror) {
+        // Mirror the finished letter within its own advance, so a mirrored line is the exact
+        // mirror image of the unmirrored one (what a die needs to print the text right-reading).
+        Affine flip = Affine::Identity();
+        flip.linear()(0, 0) = -1;
+        flip.translation() = Point(s.advance_mm, 0);
+        s.from_font = flip * s.from_font;
+      }
+      s.elements.reserve(glyph->elements.size());
+      for (const Element& e : glyph->elements) s.elements.push_back(e.transformed(s.from_font));
+    }
+    figure_.shapes.push_back(std::move(s));
+    return figure_.shapes.size() - 1;
+  }
+
+ private:
+  const StrokeFont& font_;
+  const LayoutOptions& options_;
+  Figure& figure_;
+  double scale_x_ = 1, scale_y_ = 1;
+};
+
+std::vector<std::u32string> split_lines(const std::u32string& text) {
+  std::vector<std::u32string> lines(1);
+  for (char32_t c : text) {
+    if (c == U'\n') {
+      lines.emplace_back();
+    } else if (c != U'\r') {
+      lines.back().push_back(c);
+    }
+  }
+  return lines;
+}
+
+void place(Figure& figure, std::size_t shape, std::size_t line, const Point& origin,
+           double rotation) {
+  PlacedGlyph g;
+  g.code_point = figure.shapes[shape].code_point;
+  g.shape = shape;
+  g.line = line;
+  g.origin = origin;
+  g.rotation_rad = rotation;
+  const Affine placement = g.placement();
+  const auto& local = figure.shapes[shape].elements;
+  g.elements.reserve(local.size());
+  for (const Element& e : local) g.elements.push_back(e.transformed(placement));
+  figure.glyphs.push_back(std::move(g));
+}
+
+double line_width(const Figure& figure, const std::vector<std::size_t>& shapes, double gap) {
+  double w = 0;
+  for (std::size_t s : shapes) w += figure.shapes[s].advance_mm;
+  if (!shapes.empty()) w += gap * static_cast<double>(shapes.size() - 1);
+  return w;
+}
+
+}  // namespace
+
+Figure layout_text(std::string_view utf8_text, const StrokeFont& font, const LayoutOptions& o) {
+  validate(o);
+  const std::u32string text = decode_utf8(utf8_text, "text");
+  Figure figure;
+  Shaper shaper(font, o, figure);
+  const double pitch = o.line_spacing * font.metrics().line_height * o.height_mm /
+                       font.metrics().standard_height;
+
+  const std::vector<std::u32string> lines = split_lines(text);
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    std::vector<std::size_t> shapes;
+    shapes.reserve(lines[k].size());
+    for (char32_t c : lines[k]) shapes.push_back(shaper.shape(c));
+    // Mirroring reverses the letter order before fitting, as the paper does.
+    if (o.mirror) std::reverse(shapes.begin(), shapes.end());
+    const double width = line_width(figure, shapes, o.gap_mm);
+
+    if (!o.circle) {
+      double x = o.base.x();
+      if (o.align == Align::center) x -= width / 2;
+      if (o.align == Align::right) x -= width;
+      const double y = o.base.y() - static_cast<double>(k) * pitch;
+      const double angle = radians(o.angle_deg);
+      const Eigen::Rotation2Dd about_base(angle);
+      for (std::size_t s : shapes) {
+        place(figure, s, k, o.base + about_base * (Point(x, y) - o.base), angle);
+        x += figure.shapes[s].advance_mm + o.gap_mm;
+      }
+      continue;
+    }
+
+    const CircleFit& c = *o.circle;
+    // Lines below the first move toward the centre outside, away from it inside.
+    const double radius = c.radius_mm + (c.inside ? 1.0 : -1.0) * static_cast<double>(k) * pitch;
+    if (radius <= 0)
+      throw InputError("line " + std::to_string(k + 1) + " of the text falls inside the circle's centre");
+    const double total = width / radius;  // θt = S_T / R
+    if (total > 2 * kPi)
+      throw InputError("text line " + std::to_string(k + 1) + " is " + std::to_string(width) +
+                       " mm long and does not fit on a circle of radius " + std::to_string(radius) +
+                       " mm");
+    // Outside the letters run clockwise from θs, inside counter-clockwise.
+    const double dir = c.inside ? 1.0 : -1.0;
+    const double start = c.start_angle_deg ? radians(*c.start_angle_deg)
+                                            : (c.inside ? 1.5 * kPi - total / 2 : 0.5 * kPi + total / 2);
+    double a = start;
+    for (std::size_t s : shapes) {
+      const double w = figure.shapes[s].advance_mm;
+      const double centre_angle = a + dir * w / (2 * radius);
+      const double rotation = centre_angle + (c.inside ? kPi / 2 : -kPi / 2);
+      const Point baseline_centre =
+          c.center + radius * Point(std::cos(centre_angle), std::sin(centre_angle));
+      const Point origin = baseline_centre - Eigen::Rotation2Dd(rotation) * Point(w / 2, 0);
+      place(figure, s, k, origin, rotation);
+      a += dir * (w + o.gap_mm) / radius;  // Δθ = (W + G) / R
+    }
+  }
+  return figure;
+}
+
+void require_inside(const Box& bounds, const Field& field, std::string_view what) {
+  const Box f = field.box();
+  if (f.contains(bounds, 1e-9)) return;
+  std::ostringstream msg;
+  msg.precision(3);
+  msg << std::fixed << what << " leaves the field: it spans x " << bounds.min.x() << " to "
+      << bounds.max.x() << " mm, y " << bounds.min.y() << " to " << bounds.max.y()
+      << " mm; the field is " << field.size_mm << " mm square (±" << field.size_mm / 2 << " mm)";
+  throw InputError(msg.str());
+}
+
+}  // namespace mark

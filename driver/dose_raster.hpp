@@ -1,0 +1,57 @@
+#pragma once
+// Laser dose on the work piece: seconds at full power per pixel (default 5 µm pixels), stored in
+// lazily allocated square tiles so only the area the beam touched costs memory (a whole 110 mm
+// field at 5 µm would be 484 M pixels).
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include "driver/vec2.hpp"
+
+namespace mark {
+
+class DoseRaster {
+ public:
+  explicit DoseRaster(double pixel_mm = 0.005);
+
+  // Deposit `dose` at point p, split bilinearly over the four nearest pixel centres.
+  void deposit(Vec2 p, double dose);
+  // Deposit `dose` spread evenly along the segment a→b (points ≤ half a pixel apart), so a fast
+  // move leaves a continuous trace rather than dots.
+  void deposit_segment(Vec2 a, Vec2 b, double dose);
+
+  // Dose of pixel (ix, iy); pixel (ix, iy) is centred on (ix·pixel, iy·pixel) mm.
+  double pixel(std::int64_t ix, std::int64_t iy) const;
+  // Dose in a spot-sized disc of radius_mm around p: pixels weighted by how far inside the disc
+  // their centres lie (anti-aliased edge one pixel wide), so the sum does not jump with p.
+  double sum_disc(Vec2 p, double radius_mm) const;
+  double total() const { return total_; }
+  double pixel_mm() const { return pixel_mm_; }
+  bool empty() const { return tiles_.empty(); }
+
+  // Pixel-index bounds of every allocated tile (inclusive); false when empty.
+  bool bounds(std::int64_t& ix0, std::int64_t& iy0, std::int64_t& ix1, std::int64_t& iy1) const;
+  // Highest pixel value.
+  double max_pixel() const;
+
+  static constexpr int tile_bits = 6;  // 64 × 64 pixel tiles
+  static constexpr int tile_size = 1 << tile_bits;
+
+ private:
+  struct Tile {
+    std::vector<float> dose = std::vector<float>(tile_size * tile_size, 0.0f);
+  };
+  static std::uint64_t key(std::int64_t tx, std::int64_t ty);
+  float* pixel_ref(std::int64_t ix, std::int64_t iy);           // allocates
+  const float* find_pixel(std::int64_t ix, std::int64_t iy) const;  // nullptr if absent
+
+  double pixel_mm_;
+  double total_ = 0;
+  std::unordered_map<std::uint64_t, std::unique_ptr<Tile>> tiles_;
+  // one-tile cache: consecutive deposits almost always hit the same tile
+  std::uint64_t cached_key_ = UINT64_MAX;
+  Tile* cached_tile_ = nullptr;
+};
+
+}  // namespace mark

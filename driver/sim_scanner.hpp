@@ -1,0 +1,84 @@
+#pragma once
+// The simulated scanner, the default device: two mirror axes that follow the commanded samples
+// through the head model (first-order lag τ — or second-order (ωn, ζ) — plus per-axis speed and
+// acceleration limits), integrated in sub-steps of the tick; a laser with an optional rise time;
+// the dose the beam leaves along its real path; the lit beam path for quality figures.
+//
+// Timing convention: sample k is the command for the end of tick k (device time (k+1)·tick);
+// during tick k the command moves linearly from sample k−1 to sample k (first-order hold, so a
+// constant-speed ramp lags by exactly τ·v) and the laser is as sample k says. Device time =
+// samples × tick. The beam starts at rest at the field centre with the laser off.
+//
+// Laser safety: a block holding any sample outside the field (or not finite) is refused as a
+// whole: the scanner halts (laser off) and throws DeviceError naming the sample and coordinate.
+// After halt() every further write throws; the laser stays off.
+#include <cstdint>
+#include <functional>
+#include <span>
+
+#include "driver/dose_raster.hpp"
+#include "driver/dose_trail.hpp"
+#include "driver/head_model.hpp"
+#include "driver/lit_paths.hpp"
+#include "driver/vec2.hpp"
+#include "ringbuffer/scan_sample.hpp"
+#include "ringbuffer/sink.hpp"
+
+namespace mark {
+
+struct SimScannerOptions {
+  HeadModel head = head_sl10();
+  double tick_s = 10e-6;            // time per sample
+  int substeps = 10;                // integration steps per tick (1 µs at the default tick)
+  double laser_rise_s = 0;          // first-order rise/fall time constant of the laser power; 0 = instant
+  double pixel_mm = 0.005;          // dose raster pixel
+  bool record_lit_paths = true;     // keep the lit beam path (for quality figures)
+  double lit_path_spacing_mm = 0.004;  // lit points kept about this far apart (≤ 1 per sub-step)
+  // Called at every sub-step with the device time, beam position and effective laser power
+  // (0..1). For validation tests; leave empty otherwise.
+  std::function<void(double t_s, Vec2 beam, double power)> probe;
+};
+
+class SimScanner : public Sink<ScanSample> {
+ public:
+  explicit SimScanner(SimScannerOptions options = {});
+
+  void write(std::span<const ScanSample> block) override;
+  void halt() noexcept override;
+
+  std::uint64_t samples() const { return samples_; }
+  double device_time_s() const { return static_cast<double>(samples_) * options_.tick_s; }
+  bool halted() const { return halted_; }
+  bool laser_commanded() const { return laser_cmd_; }  // laser gate as last commanded
+  double laser_power() const { return power_; }        // effective power now, 0..1
+  Vec2 beam() const { return {axis_[0].x, axis_[1].x}; }
+  Vec2 beam_velocity_mm_s() const { return {axis_[0].v, axis_[1].v}; }
+
+  const DoseRaster& dose() const { return dose_; }
+  const LitPaths& lit_paths() const { return lit_; }
+  const SimScannerOptions& options() const { return options_; }
+
+ private:
+  struct Axis {
+    double x = 0;  // position, mm
+    double v = 0;  // velocity, mm/s
+  };
+  void check_block(std::span<const ScanSample> block) const;
+  void follow(const ScanSample& s);
+  void step_axis(Axis& a, double cmd, double dt) const;
+  void record_lit(Vec2 p0, Vec2 p1, bool lit);
+
+  SimScannerOptions options_;
+  Axis axis_[2];
+  Vec2 cmd_{0, 0};           // previous command (start of the current tick)
+  bool laser_cmd_ = false;
+  double power_ = 0;         // effective laser power 0..1
+  bool halted_ = false;
+  bool was_lit_ = false;
+  std::uint64_t samples_ = 0;
+  DoseRaster dose_;
+  DoseTrail trail_{dose_};
+  LitPaths lit_;
+};
+
+}  // namespace mark

@@ -1,0 +1,40 @@
+// `marker layout TEXT [layout options] --json`: the Figure for other tools.
+#include <iostream>
+
+#include "marker/cli/commands.hpp"
+#include "marker/cli/layout_options.hpp"
+#include "marker/layout/figure_json.hpp"
+
+namespace mark::cli {
+
+Command make_layout_command() {
+  struct Args {
+    std::string text;
+    LayoutArgs layout;
+    bool json = false;
+  };
+  auto a = std::make_shared<Args>();
+  return Command(
+      [a](CLI::App& app) {
+        auto* sub = app.add_subcommand("layout", "lay the text out and print the figure");
+        sub->add_option("text", a->text, "text to lay out (UTF-8)")->required();
+        add_layout_options(*sub, a->layout);
+        sub->add_flag("--json", a->json, "print the figure as JSON (elements in mm, field frame)");
+        return sub;
+      },
+      [a] {
+        const LaidOutText laid = build_figure(a->text, a->layout);
+        if (a->json) {
+          std::cout << figure_to_json(laid.figure).dump() << "\n";
+          return 0;
+        }
+        const Box b = laid.figure.bounds();
+        std::cout << laid.figure.glyphs.size() << " glyphs, " << laid.figure.element_count()
+                  << " elements, marked length " << laid.figure.mark_length_mm() << " mm\n"
+                  << "bounds x " << b.min.x() << " .. " << b.max.x() << " mm, y " << b.min.y()
+                  << " .. " << b.max.y() << " mm\n";
+        return 0;
+      });
+}
+
+}  // namespace mark::cli

@@ -1,0 +1,111 @@
+#include "marker/cli/layout_options.hpp"
+
+#include <charconv>
+#include <iostream>
+
+#include "fonts/catalog.hpp"
+#include "fonts/error.hpp"
+
+namespace mark::cli {
+namespace {
+
+CircleFit parse_circle(const LayoutArgs& args) {
+  CircleFit fit;
+  double v[3];
+  const std::string& s = args.circle;
+  std::size_t pos = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t end = i < 2 ? s.find(',', pos) : s.size();
+    if (end == std::string::npos)
+      throw InputError("--circle '" + s + "': expected CX,CY,R in millimetres");
+    try {
+      std::size_t used = 0;
+      v[i] = std::stod(s.substr(pos, end - pos), &used);
+      if (used != end - pos) throw std::invalid_argument("trailing");
+    } catch (const std::exception&) {
+      throw InputError("--circle '" + s + "': '" + s.substr(pos, end - pos) + "' is not a number");
+    }
+    pos = end + 1;
+  }
+  fit.center = Point(v[0], v[1]);
+  fit.radius_mm = v[2];
+  fit.inside = args.inside;
+  fit.start_angle_deg = args.start_angle_deg;
+  return fit;
+}
+
+}  // namespace
+
+std::string unescape_text(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\\' && i + 1 < text.size() && (text[i + 1] == 'n' || text[i + 1] == '\\')) {
+      out += text[i + 1] == 'n' ? '\n' : '\\';
+      ++i;
+    } else {
+      out += text[i];
+    }
+  }
+  return out;
+}
+
+void add_layout_options(CLI::App& app, LayoutArgs& a) {
+  app.add_option("--font", a.font, "font: 'builtin', an installed font name (see 'marker fonts') or a .jhf/.lff/.cxf file")
+      ->capture_default_str();
+  app.add_option("--height", a.height_mm, "character (cap) height, mm")->capture_default_str();
+  app.add_option("--width-factor", a.width_factor, "horizontal scale of the letters")->capture_default_str();
+  app.add_option("--gap", a.gap_mm, "extra gap between letters, mm")->capture_default_str();
+  app.add_option("--line-spacing", a.line_spacing, "factor on the font's line height")->capture_default_str();
+  app.add_option("--align", a.align, "alignment of each line about the base point")
+      ->check(CLI::IsMember({"left", "center", "right"}))
+      ->capture_default_str();
+  app.add_option("--x", a.x_mm, "base point x (field frame, mm)")->capture_default_str();
+  app.add_option("--y", a.y_mm, "base point y (first baseline, mm)")->capture_default_str();
+  app.add_option("--angle", a.angle_deg, "inclined fitting: rotate the text about the base point, degrees")
+      ->capture_default_str();
+  auto* circle = app.add_option("--circle", a.circle, "circular fitting around CX,CY with radius R (mm)");
+  auto* start = app.add_option("--start-angle", a.start_angle_deg, "circular fitting: angle where the text starts, degrees");
+  auto* centred = app.add_flag("--self-centred,--self-centered", a.self_centred,
+                               "circular fitting: centre the text on the top (bottom with --inside) of the circle (default)");
+  auto* inside = app.add_flag("--inside", a.inside, "circular fitting: letters inside the circle, reading along its bottom");
+  start->needs(circle);
+  centred->needs(circle);
+  inside->needs(circle);
+  start->excludes(centred);
+  app.add_option("--italic", a.italic_deg, "font inclination (shear), degrees")->capture_default_str();
+  app.add_flag("--mirror", a.mirror, "mirror the text (reverse the letter order, mirror each letter)");
+  app.add_flag("--replace-missing", a.replace_missing, "draw the font's replacement glyph for characters it lacks");
+  app.add_option("--field", a.field_mm, "field size (square), mm")->capture_default_str();
+}
+
+LayoutOptions to_layout_options(const LayoutArgs& a) {
+  LayoutOptions o;
+  o.height_mm = a.height_mm;
+  o.width_factor = a.width_factor;
+  o.gap_mm = a.gap_mm;
+  o.line_spacing = a.line_spacing;
+  o.align = a.align == "center" ? Align::center : a.align == "right" ? Align::right : Align::left;
+  o.base = Point(a.x_mm, a.y_mm);
+  o.angle_deg = a.angle_deg;
+  if (!a.circle.empty()) o.circle = parse_circle(a);
+  o.italic_deg = a.italic_deg;
+  o.mirror = a.mirror;
+  o.replace_missing = a.replace_missing;
+  return o;
+}
+
+LaidOutText build_figure(const std::string& text, const LayoutArgs& args) {
+  if (!(args.field_mm > 0)) throw InputError("--field must be a positive size in mm");
+  Warnings warnings;
+  LaidOutText out;
+  out.font = open_font(args.font, &warnings);
+  for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
+  out.figure = layout_text(unescape_text(text), *out.font, to_layout_options(args));
+  out.field = Field{args.field_mm};
+  if (out.figure.bounds().empty()) throw InputError("text '" + text + "' has nothing to mark");
+  require_inside(out.figure.bounds(), out.field, "the text layout");
+  return out;
+}
+
+}  // namespace mark::cli

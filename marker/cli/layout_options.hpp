@@ -1,0 +1,52 @@
+#pragma once
+// The layout options every command that takes text shares: --font, --height, --width-factor,
+// --gap, --line-spacing, --align, --x/--y, --angle, --circle with --start-angle or
+// --self-centred and --inside, --italic, --mirror, --field.
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "fonts/stroke_font.hpp"
+#include "marker/layout/layout.hpp"
+
+namespace mark::cli {
+
+struct LayoutArgs {
+  std::string font = "builtin";
+  double height_mm = 5.0;
+  double width_factor = 1.0;
+  double gap_mm = 0.0;
+  double line_spacing = 1.0;
+  std::string align = "left";
+  double x_mm = 0.0;
+  double y_mm = 0.0;
+  double angle_deg = 0.0;
+  std::string circle;  // "CX,CY,R"
+  std::optional<double> start_angle_deg;
+  bool self_centred = false;
+  bool inside = false;
+  double italic_deg = 0.0;
+  bool mirror = false;
+  bool replace_missing = false;
+  double field_mm = 110.0;
+};
+
+void add_layout_options(CLI::App& app, LayoutArgs& args);
+
+// LayoutOptions from the parsed arguments; throws InputError for a malformed --circle.
+LayoutOptions to_layout_options(const LayoutArgs& args);
+
+struct LaidOutText {
+  std::shared_ptr<const StrokeFont> font;
+  Figure figure;
+  Field field;
+};
+
+// Command-line text: a backslash-n starts a new line, a double backslash is one backslash.
+std::string unescape_text(const std::string& text);
+
+// Opens the font, lays the text out and refuses an empty text or a layout that leaves the field.
+LaidOutText build_figure(const std::string& text, const LayoutArgs& args);
+
+}  // namespace mark::cli

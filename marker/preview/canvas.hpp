@@ -1,0 +1,43 @@
+#pragma once
+// A Cairo drawing surface in field millimetres (y up) that writes itself as SVG or PNG, chosen by
+// the output file's extension. Shared by every preview (layout, mark, gcode, peen).
+#include <cairo.h>
+
+#include <string>
+
+#include "fonts/box.hpp"
+
+namespace mark {
+
+class Canvas {
+ public:
+  // One view: `view` is the region of the field to show (mm); px_per_mm its scale.
+  Canvas(const std::string& path, const Box& view, double px_per_mm);
+  // A blank picture of the given size for several views (panels), each set with set_view.
+  Canvas(const std::string& path, int width_px, int height_px);
+  ~Canvas();
+  Canvas(const Canvas&) = delete;
+  Canvas& operator=(const Canvas&) = delete;
+
+  cairo_t* cr() { return cr_; }
+  // Draw `view` (mm, y up) into the panel whose top-left corner is at (x_px, y_px), clipped to it.
+  void set_view(const Box& view, double x_px, double y_px, double px_per_mm);
+  double px_per_mm() const { return px_per_mm_; }
+  // Line width in pixels regardless of the mm scale.
+  void set_line_px(double px);
+  void set_dash_px(double on_px, double off_px);
+  // Writes the file; throws InputError naming it on failure.
+  void finish();
+
+ private:
+  std::string temp_path() const;
+
+  std::string path_;
+  bool png_ = false;
+  bool finished_ = false;
+  double px_per_mm_;
+  cairo_surface_t* surface_ = nullptr;
+  cairo_t* cr_ = nullptr;
+};
+
+}  // namespace mark

@@ -1,0 +1,119 @@
+#include "marker/preview/figure_preview.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "marker/preview/cairo_path.hpp"
+#include "marker/preview/canvas.hpp"
+
+namespace mark {
+namespace {
+
+constexpr double kOverviewPx = 520;  // the whole field, left panel
+constexpr double kDetailPx = 1100;   // the figure enlarged, right panel
+constexpr double kGapPx = 16;
+
+Box grown(const Box& b, double by) {
+  Box g;
+  g.add(b.min - Point(by, by));
+  g.add(b.max + Point(by, by));
+  return g;
+}
+
+// The pen's route through the figure: travel from each stroke's end to the next stroke's start,
+// whether the glyph data holds that move as a laser-off element or it falls between glyphs.
+void draw_travel(Canvas& canvas, const Figure& figure) {
+  cairo_t* cr = canvas.cr();
+  bool have_pen = false;
+  Point pen;
+  for (const PlacedGlyph& g : figure.glyphs) {
+    for (const Element& e : g.elements) {
+      if (!e.laser()) continue;
+      if (have_pen && (e.start() - pen).norm() > 1e-9) {
+        cairo_move_to(cr, pen.x(), pen.y());
+        cairo_line_to(cr, e.start().x(), e.start().y());
+      }
+      pen = e.end();
+      have_pen = true;
+    }
+  }
+  cairo_set_source_rgba(cr, 0.85, 0.2, 0.1, 0.8);
+  canvas.set_line_px(1.0);
+  canvas.set_dash_px(4, 3);
+  cairo_stroke(cr);
+  canvas.set_dash_px(0, 0);
+}
+
+void draw_field(Canvas& canvas, const Field& field) {
+  cairo_t* cr = canvas.cr();
+  const Box f = field.box();
+  cairo_rectangle(cr, f.min.x(), f.min.y(), f.width(), f.height());
+  cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+  canvas.set_line_px(1.5);
+  cairo_stroke(cr);
+  const double tick = field.size_mm * 0.02;
+  cairo_move_to(cr, -tick, 0);
+  cairo_line_to(cr, tick, 0);
+  cairo_move_to(cr, 0, -tick);
+  cairo_line_to(cr, 0, tick);
+  cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
+  canvas.set_line_px(1.0);
+  cairo_stroke(cr);
+}
+
+void draw_marks(Canvas& canvas, const Figure& figure) {
+  cairo_t* cr = canvas.cr();
+  for (const PlacedGlyph& g : figure.glyphs)
+    for (const Element& e : g.elements)
+      if (e.laser()) append_element(cr, e);
+  cairo_set_source_rgb(cr, 0.05, 0.15, 0.55);
+  canvas.set_line_px(std::clamp(canvas.px_per_mm() * 0.08, 1.2, 3.0));
+  cairo_stroke(cr);
+}
+
+void draw_panel(Canvas& canvas, const Figure& figure, const Field& field, const PreviewOptions& o) {
+  draw_field(canvas, field);
+  if (o.show_travel) draw_travel(canvas, figure);
+  draw_marks(canvas, figure);
+}
+
+}  // namespace
+
+void write_figure_preview(const Figure& figure, const Field& field, const std::string& path,
+                          const PreviewOptions& options) {
+  const Box overview = grown(field.box(), field.size_mm * 0.02);
+  const Box bounds = figure.bounds();
+  const bool small = !bounds.empty() && std::max(bounds.width(), bounds.height()) < 0.4 * field.size_mm;
+  if (options.px_per_mm > 0 || !small) {
+    // One panel: the whole field.
+    const double scale = options.px_per_mm > 0 ? options.px_per_mm : 1200.0 / overview.width();
+    Canvas canvas(path, overview, scale);
+    draw_panel(canvas, figure, field, options);
+    canvas.finish();
+    return;
+  }
+  // A small figure gets two panels: the whole field, and the figure enlarged beside it.
+  const Box detail = grown(bounds, std::max(0.5, 0.08 * std::max(bounds.width(), bounds.height())));
+  const double detail_scale = std::min(kDetailPx / detail.width(), kDetailPx / detail.height());
+  const double detail_h = detail.height() * detail_scale;
+  const double overview_scale = kOverviewPx / overview.width();
+  const int width = static_cast<int>(std::ceil(kOverviewPx + kGapPx + detail.width() * detail_scale));
+  const int height = static_cast<int>(std::ceil(std::max(kOverviewPx, detail_h)));
+  Canvas canvas(path, width, height);
+  canvas.set_view(overview, 0, (height - kOverviewPx) / 2, overview_scale);
+  draw_panel(canvas, figure, field, options);
+  // Where the enlarged panel looks.
+  cairo_rectangle(canvas.cr(), detail.min.x(), detail.min.y(), detail.width(), detail.height());
+  cairo_set_source_rgb(canvas.cr(), 0.1, 0.6, 0.2);
+  canvas.set_line_px(1.0);
+  cairo_stroke(canvas.cr());
+  canvas.set_view(detail, kOverviewPx + kGapPx, (height - detail_h) / 2, detail_scale);
+  cairo_rectangle(canvas.cr(), detail.min.x(), detail.min.y(), detail.width(), detail.height());
+  cairo_set_source_rgb(canvas.cr(), 0.1, 0.6, 0.2);
+  canvas.set_line_px(2.0);
+  cairo_stroke(canvas.cr());
+  draw_panel(canvas, figure, field, options);
+  canvas.finish();
+}
+
+}  // namespace mark

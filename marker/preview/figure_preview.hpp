@@ -1,0 +1,20 @@
+#pragma once
+// Preview of a Figure as SVG or PNG (by the file's extension): the field frame, marks as solid
+// lines, travel between strokes dashed.
+#include <string>
+
+#include "marker/layout/figure.hpp"
+#include "marker/layout/layout.hpp"
+
+namespace mark {
+
+struct PreviewOptions {
+  double px_per_mm = 0;  // 0: the field fills about 1200 px
+  bool show_travel = true;
+};
+
+// Throws InputError naming the file if it cannot be written or its extension is not .svg/.png.
+void write_figure_preview(const Figure& figure, const Field& field, const std::string& path,
+                          const PreviewOptions& options = {});
+
+}  // namespace mark

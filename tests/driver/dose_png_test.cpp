@@ -1,0 +1,61 @@
+// The dose image: a PNG of the used area, dark where the dose is high, y up.
+#include "driver/dose_png.hpp"
+
+#include <cairo.h>
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+
+#include "driver/device_error.hpp"
+
+namespace mark {
+namespace {
+
+std::uint32_t grey_at(cairo_surface_t* s, int x, int y) {
+  const auto* row = cairo_image_surface_get_data(s) + y * cairo_image_surface_get_stride(s);
+  return reinterpret_cast<const std::uint32_t*>(row)[x] & 0xff;
+}
+
+TEST(DosePng, WritesTheUsedAreaDarkWhereDosed) {
+  DoseRaster dose(0.005);
+  dose.deposit_segment({0, 0}, {0.5, 0}, 1.0);       // horizontal line at the bottom
+  dose.deposit_segment({0, 0.2}, {0, 0.3}, 0.2);     // vertical line above its left end, same mm dose
+  const auto path = std::filesystem::path(MARKER_BINARY_DIR) / "dose_png_test.png";
+  write_dose_png(dose, path.string(), {.margin_px = 4});
+  cairo_surface_t* img = cairo_image_surface_create_from_png(path.c_str());
+  ASSERT_EQ(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
+  const int w = cairo_image_surface_get_width(img), h = cairo_image_surface_get_height(img);
+  // Tiles of 64 px cover 0..0.5 mm × 0..0.3 mm: 2 × 1 tiles (one tile row, y 0..0.315 mm).
+  EXPECT_EQ(w, 2 * 64 + 8);
+  EXPECT_EQ(h, 1 * 64 + 8);
+  cairo_surface_flush(img);
+  // Pixel (ix, iy) → image (4 + ix, h − 1 − 4 − iy). The horizontal line is dark at iy = 0,
+  // the vertical one at ix = 0 around iy = 50; the background is white.
+  EXPECT_LT(grey_at(img, 4 + 50, h - 1 - 4 - 0), 200u);
+  EXPECT_LT(grey_at(img, 4 + 0, h - 1 - 4 - 50), 200u);
+  EXPECT_EQ(grey_at(img, 4 + 50, h - 1 - 4 - 40), 255u);
+  EXPECT_EQ(grey_at(img, 0, 0), 255u);
+  cairo_surface_destroy(img);
+}
+
+TEST(DosePng, DownsamplesLargeRasters) {
+  DoseRaster dose(0.005);
+  dose.deposit_segment({0, 0}, {20, 0}, 1.0);  // 4000 px long
+  const auto path = std::filesystem::path(MARKER_BINARY_DIR) / "dose_png_large.png";
+  write_dose_png(dose, path.string(), {.margin_px = 0, .max_side_px = 1000});
+  cairo_surface_t* img = cairo_image_surface_create_from_png(path.c_str());
+  ASSERT_EQ(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
+  // 63 tiles = 4032 px wide; the smallest integer factor that fits 1000 is 5.
+  EXPECT_EQ(cairo_image_surface_get_width(img), 4032 / 5 + 1);
+  cairo_surface_destroy(img);
+}
+
+TEST(DosePng, UnwritablePathIsADeviceError) {
+  DoseRaster dose;
+  dose.deposit({0, 0}, 1);
+  EXPECT_THROW(write_dose_png(dose, "/nonexistent-dir/x.png"), DeviceError);
+}
+
+}  // namespace
+}  // namespace mark

@@ -1,0 +1,118 @@
+// The command line end to end, in-process: layout JSON, previews, and one-line errors with a
+// non-zero exit that leave no file behind.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "marker/cli/cli.hpp"
+
+namespace mark {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int code;
+  std::string out;
+  std::string err;
+};
+
+Result run(std::vector<std::string> args) {
+  args.insert(args.begin(), "marker");
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  const int code = cli::run(static_cast<int>(argv.size()), argv.data());
+  Result r{code, testing::internal::GetCapturedStdout(), testing::internal::GetCapturedStderr()};
+  return r;
+}
+
+fs::path temp_file(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / "marker_cli_test";
+  fs::create_directories(dir);
+  fs::remove(dir / name);
+  return dir / name;
+}
+
+TEST(CliLayout, JsonHasGlyphsWithElementsInMillimetres) {
+  const Result r = run({"layout", "O1", "--height", "4", "--x", "-5", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["glyphs"].size(), 2u);
+  EXPECT_EQ(j["glyphs"][0]["char"], "O");
+  bool has_curve = false;
+  for (const auto& e : j["glyphs"][0]["elements"]) {
+    ASSERT_TRUE(e.contains("kind") && e.contains("laser") && e.contains("start") && e.contains("end"));
+    if (e["kind"] == "arc") {
+      has_curve = true;
+      EXPECT_TRUE(e.contains("center") && e.contains("radius") && e.contains("ccw"));
+    }
+    if (e["kind"] == "ellipse") {
+      has_curve = true;
+      for (const char* k : {"center", "rx", "ry", "rotation_deg", "start_param", "end_param", "ccw"})
+        EXPECT_TRUE(e.contains(k)) << k;
+    }
+  }
+  EXPECT_TRUE(has_curve) << "the built-in O is drawn with arcs";
+  // Cap height 4 mm: the figure is 4 mm tall (O may overshoot slightly).
+  const double h = j["bounds"]["max"][1].get<double>() - j["bounds"]["min"][1].get<double>();
+  EXPECT_NEAR(h, 4.0, 0.2);
+  EXPECT_NEAR(j["bounds"]["min"][0].get<double>(), -5.0, 1.0);
+}
+
+TEST(CliLayout, PreviewWritesSvgAndPng) {
+  for (const char* name : {"p.svg", "p.png"}) {
+    const fs::path out = temp_file(name);
+    const Result r = run({"preview", "SN 0042", "--height", "3", "-o", out.string()});
+    ASSERT_EQ(r.code, 0) << r.err;
+    ASSERT_TRUE(fs::exists(out));
+    EXPECT_GT(fs::file_size(out), 500u);
+    EXPECT_FALSE(fs::exists(out.string() + ".part"));
+    std::ifstream in(out, std::ios::binary);
+    std::string head(8, '\0');
+    in.read(head.data(), 8);
+    if (out.extension() == ".png") {
+      EXPECT_EQ(head.substr(1, 3), "PNG");
+    } else {
+      EXPECT_NE(head.find("<?xml"), std::string::npos);
+    }
+  }
+}
+
+// Each refusal is one line on stderr naming the problem, exit 1, and no file written.
+TEST(CliLayout, RefusalsAreOneLineErrors) {
+  const fs::path out = temp_file("refused.png");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"preview", "TOO WIDE FOR THE FIELD", "--height", "20", "-o", out.string()}, "leaves the field"},
+      {{"preview", "X", "--font", "no-such-font", "-o", out.string()}, "unknown font 'no-such-font'"},
+      {{"preview", "\xc3\xa9", "-o", out.string()}, "no glyph for 'é' (U+00E9)"},
+      {{"preview", "AB", "--height", "-1", "-o", out.string()}, "character height must be a positive number"},
+      {{"preview", "AB", "--circle", "0,0", "-o", out.string()}, "--circle '0,0'"},
+      {{"preview", "AB", "-o", temp_file("x.jpg").string()}, "must end in .svg or .png"},
+      {{"preview", "   ", "-o", out.string()}, "has nothing to mark"},
+      {{"preview", "AB", "-o", "/nonexistent-dir/x.png"}, "/nonexistent-dir/x.png"},
+  };
+  for (const auto& [args, expected] : cases) {
+    const Result r = run(args);
+    EXPECT_EQ(r.code, 1) << expected;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << "stderr: " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+TEST(CliLayout, FontsListsBuiltinAndDebianFonts) {
+  const Result r = run({"fonts"});
+  ASSERT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("builtin"), std::string::npos);
+  EXPECT_NE(r.out.find("rowmans"), std::string::npos);
+  EXPECT_NE(r.out.find("standard  lff"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mark

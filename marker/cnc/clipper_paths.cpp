@@ -93,6 +93,26 @@ bool contains(const Paths& region, const Point& p) {
   return inside != 0;
 }
 
+namespace {
+// Do segments ab and cd cross at a point inside both (touching does not count)?
+bool crosses(const Point& a, const Point& b, const Point& c, const Point& d) {
+  auto side = [](const Point& p, const Point& q, const Point& r) {
+    return (q.x() - p.x()) * (r.y() - p.y()) - (q.y() - p.y()) * (r.x() - p.x());
+  };
+  const double d1 = side(a, b, c), d2 = side(a, b, d), d3 = side(c, d, a), d4 = side(c, d, b);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+}  // namespace
+
+bool segment_inside(const Paths& region, const Point& a, const Point& b) {
+  if (!contains(region, (a + b) / 2)) return false;
+  for (const Path& path : region)
+    for (std::size_t k = 0; k < path.size(); ++k)
+      if (crosses(a, b, to_mm(path[k]), to_mm(path[(k + 1) % path.size()]))) return false;
+  return true;
+}
+
 Path rectangle_nm(const Box& b) {
   return {to_nm(b.min), to_nm(Point(b.max.x(), b.min.y())), to_nm(b.max), to_nm(Point(b.min.x(), b.max.y()))};
 }

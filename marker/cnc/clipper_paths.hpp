@@ -37,6 +37,9 @@ double area_mm2(const ClipperLib::Paths& region);
 // Inside the region under the even-odd rule (boundary counts as inside).
 bool contains(const ClipperLib::Paths& region, const Point& p);
 
+// Does the segment ab stay inside the region (midpoint inside, no boundary edge crossed)?
+bool segment_inside(const ClipperLib::Paths& region, const Point& a, const Point& b);
+
 ClipperLib::Path rectangle_nm(const Box& box);
 
 }  // namespace mark

@@ -79,6 +79,11 @@ class Writer {
   Frame frame_ = Frame::literal;
 
   bool upper() const { return o_.dialect == Dialect::fanuc; }
+  bool uses_comp() const {
+    for (const ToolStep& st : tp_.steps)
+      if (const auto* m = std::get_if<ToolMove>(&st); m && m->comp != CompSide::unchanged) return true;
+    return false;
+  }
   void line(const std::string& s) {
     out_ += s;
     out_ += '\n';
@@ -162,6 +167,10 @@ class Writer {
     if (!o_.title.empty()) first.append(" ").append(comment(o_.title, true));
     line(first);
     preamble(" G94");
+    if (uses_comp())
+      line(comment("D1 = tool radius " + num(tp_.comp_diameter_mm / 2 * scale_) +
+                       (o_.units == Units::inch ? " inch" : " mm") + " for G41",
+                   true));
     start_spindle(true);  // Fanuc reads S as an integer
     bool shifted = false;
     for (const ToolStep& st : tp_.steps)

@@ -39,23 +39,6 @@ bool inside_component(const Component& c, const IntPoint& p) {
   return true;
 }
 
-// Do segments ab and cd cross at a point inside both (touching does not count)?
-bool crosses(const Point& a, const Point& b, const Point& c, const Point& d) {
-  auto side = [](const Point& p, const Point& q, const Point& r) {
-    return (q.x() - p.x()) * (r.y() - p.y()) - (q.y() - p.y()) * (r.x() - p.x());
-  };
-  const double d1 = side(a, b, c), d2 = side(a, b, d), d3 = side(c, d, a), d4 = side(c, d, b);
-  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
-}
-
-bool segment_inside(const Paths& region, const Point& a, const Point& b) {
-  if (!contains(region, (a + b) / 2)) return false;
-  for (const Path& path : region)
-    for (std::size_t k = 0; k < path.size(); ++k)
-      if (crosses(a, b, to_mm(path[k]), to_mm(path[(k + 1) % path.size()]))) return false;
-  return true;
-}
-
 void emit_component(std::vector<Component>& comps, std::size_t idx, std::vector<PocketLoop>& out) {
   for (std::size_t child : comps[idx].children) emit_component(comps, child, out);
   out.push_back({to_mm(comps[idx].outer), comps[idx].level});

@@ -4,6 +4,7 @@
 
 #include "fonts/error.hpp"
 #include "marker/cnc/clipper_paths.hpp"
+#include "marker/cnc/comp_contours.hpp"
 #include "marker/cnc/pocket.hpp"
 
 namespace mark {
@@ -27,8 +28,8 @@ std::string mm(double v) {
   return s.str();
 }
 
-std::vector<UncutRegion> uncut_regions(const Paths& material, const Paths& cleared) {
-  Paths left = difference(material, cleared);
+std::vector<UncutRegion> uncut_regions(const Paths& material, const Paths& cleared, Paths& left) {
+  left = difference(material, cleared);
   // Opening: drop slivers thinner than the film, keep the rest at full size.
   left = offset_region(offset_region(left, -kUncutFilmMm / 2, kArcTolMm), kUncutFilmMm / 2, kArcTolMm);
   left = intersection(left, difference(material, cleared));
@@ -73,10 +74,22 @@ ProtrusionResult protrusion_toolpath(const Figure& figure, const CutSettings& s,
   inset.max -= Point(r, r);
   res.tool_region = difference({rectangle_nm(inset)}, keep_out);
   res.cleared = offset_region(res.tool_region, r, kArcTolMm);
-  res.uncut = uncut_regions(difference({rectangle_nm(res.plate)}, res.letters), res.cleared);
+  res.uncut = uncut_regions(difference({rectangle_nm(res.plate)}, res.letters), res.cleared, res.uncut_region);
 
-  const std::vector<PocketLoop> loops = pocket_loops(res.tool_region, res.stepover_mm, kArcTolMm);
-  res.loops = loops.size();
+  std::vector<PocketLoop> loops = pocket_loops(res.tool_region, res.stepover_mm, kArcTolMm);
+  std::vector<CompContour> walls;
+  if (ps.cutter_comp) {
+    // The walls go to the control as part contours; only the inner loops stay tool-centre paths.
+    walls = comp_contours(res.tool_region, r, kArcTolMm, res.walls_without_comp);
+    std::erase_if(loops, [&](const PocketLoop& l) {
+      if (l.level != 0) return false;
+      for (const CompContour& c : walls)
+        if (follows_wall(l.points, c, r)) return true;
+      return false;
+    });
+    res.comp_walls = walls.size();
+  }
+  res.loops = loops.size() + walls.size();
   Toolpath& tp = res.toolpath;
   tp.safe_z_mm = s.safe_z_mm;
   tp.comp_diameter_mm = s.tool_diameter_mm;
@@ -84,10 +97,12 @@ ProtrusionResult protrusion_toolpath(const Figure& figure, const CutSettings& s,
   std::vector<ToolMove> moves;
   Point at = res.plate.min;
   bool at_depth = false;
-  for (double z : pass_depths(s)) append_pocket_pass(loops, res.tool_region, z, pm, at, at_depth, moves);
+  for (double z : pass_depths(s)) {
+    append_pocket_pass(loops, res.tool_region, z, pm, at, at_depth, moves);
+    append_comp_contours(walls, res.tool_region, z, pm, at, at_depth, moves);
+  }
   moves.push_back(ToolMove::rapid(at.x(), at.y(), s.safe_z_mm));
   for (const ToolMove& m : moves) tp.steps.emplace_back(m);
-  (void)ps.cutter_comp;
   return res;
 }
 

@@ -41,9 +41,12 @@ struct ProtrusionResult {
   ClipperLib::Paths tool_region;      // P, nm: where the tool centre may go
   ClipperLib::Paths cleared;          // P grown by the tool radius: what the tool removes
   std::vector<UncutRegion> uncut;     // material inside R, outside L, the tool cannot reach
+  ClipperLib::Paths uncut_region;     // the same as polygons, nm
   double stroke_width_mm = 0;
   double stepover_mm = 0;
   std::size_t loops = 0;              // pocket loops per pass
+  std::size_t comp_walls = 0;         // --cutter-comp: walls programmed as part contours
+  std::size_t walls_without_comp = 0; // --cutter-comp: walls without room for a lead move
 };
 
 // Throws InputError for impossible settings (step-over above the tool radius, nothing to cut).

@@ -159,3 +159,49 @@ TEST(Protrusion, RejectsAStepOverLargerThanTheToolRadius) {
 
 }  // namespace
 }  // namespace mark::test
+
+namespace mark::test {
+namespace {
+
+// --cutter-comp: the walls go out as part contours under G41 and the control offsets them. The
+// interpreter's output is the compensated tool centre, so the same checks apply unchanged.
+TEST(Protrusion, CutterCompensationByTheControl) {
+  FigureSpec spec;
+  spec.text = "DOL";
+  spec.gap_mm = 2.5;
+  const Figure fig = make_figure(spec);
+  CutSettings s;
+  s.tool_diameter_mm = 0.8;
+  s.depth_mm = 0.3;
+  ProtrusionSettings ps;
+  ps.cutter_comp = true;
+  const ProtrusionResult res = protrusion_toolpath(fig, s, ps);
+  // The plate's boundary and the outsides of D, O and L go to the control; the small counters
+  // of D and O leave no room for a lead move and keep their tool-centre loops.
+  EXPECT_GE(res.comp_walls, 4u);
+  EXPECT_LE(res.walls_without_comp, 2u);
+  for (Dialect d : {Dialect::linuxcnc, Dialect::fanuc}) {
+    GcodeOptions o;
+    o.dialect = d;
+    const std::string program = write_gcode(res.toolpath, o);
+    if (d == Dialect::linuxcnc) {
+      EXPECT_NE(program.find("G41.1 D0.8 "), std::string::npos);
+    } else {
+      EXPECT_NE(program.find("G41 D1 "), std::string::npos);
+      EXPECT_NE(program.find("(D1 = TOOL RADIUS 0.4 MM FOR G41)"), std::string::npos);
+    }
+    EXPECT_NE(program.find("G40 G1"), std::string::npos);
+    // Fanuc's D1 is looked up in the tool table: tool 1, 0.8 mm = 0.031496 inch.
+    const Rs274Run run = run_rs274(program, std::string("protrusion_comp_") + name(d), "T1 P1 D0.031496");
+    ASSERT_EQ(run.exit_code, 0) << run.file << ":\n" << run.errors;
+    const ProtrusionCheck c = check_protrusion(fig, run, s, res);
+    EXPECT_GE(c.closest_to_letters_mm, s.tool_diameter_mm / 2 - kClosenessTolMm);
+    EXPECT_EQ(c.wider_than_tool, 0);
+  }
+  GcodeOptions plain;
+  plain.dialect = Dialect::plain;
+  EXPECT_THROW(write_gcode(res.toolpath, plain), InputError);
+}
+
+}  // namespace
+}  // namespace mark::test

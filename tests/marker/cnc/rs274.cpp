@@ -110,7 +110,7 @@ std::string rs274_path() {
   return {};
 }
 
-Rs274Run run_rs274(const std::string& program, const std::string& name) {
+Rs274Run run_rs274(const std::string& program, const std::string& name, const std::string& tool_table) {
   Rs274Run run;
   const std::string exe = rs274_path();
   if (exe.empty()) return run;
@@ -120,7 +120,13 @@ Rs274Run run_rs274(const std::string& program, const std::string& name) {
   std::ofstream(file) << program;
   run.file = file.string();
   const fs::path out = dir / (name + ".canon"), err = dir / (name + ".err");
-  const std::string cmd = "'" + exe + "' '" + file.string() + "' > '" + out.string() + "' 2> '" +
+  std::string env;
+  if (!tool_table.empty()) {
+    const fs::path tbl = dir / (name + ".tbl");
+    std::ofstream(tbl) << tool_table << "\n";
+    env = "RS274_TOOL_TABLE='" + tbl.string() + "' ";
+  }
+  const std::string cmd = env + "'" + exe + "' '" + file.string() + "' > '" + out.string() + "' 2> '" +
                           err.string() + "' < /dev/null";
   const int status = std::system(cmd.c_str());
   run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

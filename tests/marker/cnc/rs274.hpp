@@ -30,7 +30,9 @@ struct Rs274Run {
 // Path to the rs274 wrapper; fails the calling test (with how to get it) when missing.
 std::string rs274_path();
 
-// Writes `program` to <build>/cnc_programs/<name>.ngc and interprets it.
-Rs274Run run_rs274(const std::string& program, const std::string& name);
+// Writes `program` to <build>/cnc_programs/<name>.ngc and interprets it, with `tool_table` as
+// the tool table when given (LinuxCNC format, e.g. "T1 P1 D0.0315" — standalone rs274 reads the
+// diameter in inches).
+Rs274Run run_rs274(const std::string& program, const std::string& name, const std::string& tool_table = "");
 
 }  // namespace mark::test

@@ -8,6 +8,8 @@ std::vector<Command> all_commands() {
   c.push_back(make_layout_command());
   c.push_back(make_fonts_command());
   c.push_back(make_peen_command());
+  c.push_back(make_gcode_command());
+  c.push_back(make_tool_measure_command());
   return c;
 }
 

@@ -85,7 +85,7 @@ void append_comp_contours(const std::vector<CompContour>& contours, const Clippe
                           double z, const PocketMoves& m, Point& at, bool& at_depth, std::vector<ToolMove>& out) {
   for (const CompContour& c : contours) {
     const Point& q = c.lead;
-    if (at_depth && segment_inside(region, at, q)) {
+    if (at_depth && (q - at).norm() <= m.max_link_mm && segment_inside(region, at, q)) {
       out.push_back(ToolMove::feed(q.x(), q.y(), z, m.feed_mm_min));
     } else {
       if (at_depth) out.push_back(ToolMove::rapid(at.x(), at.y(), m.safe_z_mm));

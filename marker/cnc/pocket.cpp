@@ -87,7 +87,7 @@ void append_pocket_pass(const std::vector<PocketLoop>& loops, const Paths& regio
       if (d < best) best = d, start = k;
     }
     const Point& p0 = loop.points[start];
-    if (at_depth && segment_inside(region, at, p0)) {
+    if (at_depth && (p0 - at).norm() <= m.max_link_mm && segment_inside(region, at, p0)) {
       out.push_back(ToolMove::feed(p0.x(), p0.y(), z, m.feed_mm_min));
     } else {
       if (at_depth) out.push_back(ToolMove::rapid(at.x(), at.y(), m.safe_z_mm));

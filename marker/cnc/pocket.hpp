@@ -26,10 +26,14 @@ struct PocketMoves {
   double safe_z_mm = 5;
   double feed_mm_min = 300;
   double plunge_feed_mm_min = 100;
+  // Links between loops longer than this go up and over instead of cutting through at depth
+  // (a long link would slot through material the loops have not cleared yet).
+  double max_link_mm = 1;
 };
 
 // Cuts every loop at height z, starting each at the vertex nearest to where the tool is; a
-// short link that stays inside `region` is cut at depth, any other goes up to safe height.
+// link no longer than max_link_mm that stays inside `region` is cut at depth, any other goes up
+// to safe height.
 // `at` is where the tool is (updated); `at_depth` whether it is down at z already.
 void append_pocket_pass(const std::vector<PocketLoop>& loops, const ClipperLib::Paths& region,
                         double z_mm, const PocketMoves& m, Point& at, bool& at_depth,

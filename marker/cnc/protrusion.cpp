@@ -93,7 +93,7 @@ ProtrusionResult protrusion_toolpath(const Figure& figure, const CutSettings& s,
   Toolpath& tp = res.toolpath;
   tp.safe_z_mm = s.safe_z_mm;
   tp.comp_diameter_mm = s.tool_diameter_mm;
-  const PocketMoves pm{s.safe_z_mm, s.feed_mm_min, s.plunge_feed_mm_min};
+  const PocketMoves pm{s.safe_z_mm, s.feed_mm_min, s.plunge_feed_mm_min, 2 * res.stepover_mm};
   std::vector<ToolMove> moves;
   Point at = res.plate.min;
   bool at_depth = false;

@@ -9,65 +9,12 @@
 
 #include "marker/cnc/depression.hpp"
 #include "marker/cnc/gcode_writer.hpp"
-#include "path_checks.hpp"
+#include "cnc_checks.hpp"
 #include "rs274.hpp"
 #include "test_figures.hpp"
 
 namespace mark::test {
 namespace {
-
-constexpr double kTolMm = 0.005;  // the bound for engraving moves vs strokes
-
-enum class Variant { upright, mirrored, sheared };
-
-const char* name(Dialect d) { return d == Dialect::linuxcnc ? "linuxcnc" : d == Dialect::fanuc ? "fanuc" : "plain"; }
-const char* name(Fit f) { return f == Fit::linear ? "linear" : f == Fit::inclined ? "inclined" : "circular"; }
-const char* name(Variant v) { return v == Variant::upright ? "upright" : v == Variant::mirrored ? "mirrored" : "sheared"; }
-
-struct Checked {
-  std::size_t cutting_moves = 0;
-  std::size_t arcs = 0;
-  double worst_off_stroke_mm = 0;
-  double worst_uncovered_mm = 0;
-};
-
-// The interpreter's moves against the Figure. `print_mm`: resolution of rs274's printout.
-Checked check_depression(const Figure& fig, const Rs274Run& run, const CutSettings& s, double print_mm) {
-  Checked c;
-  const NearSet strokes = lit_strokes(fig);
-  const std::vector<CanonMove> cuts = cutting_moves(run.moves, -1e-6);
-  c.cutting_moves = cuts.size();
-  for (const CanonMove& m : cuts) {
-    if (m.kind == CanonMove::arc) ++c.arcs;
-    for (const Point& p : samples(m.path(), 0.02)) {
-      const double d = strokes.distance(p, 1.0);
-      if (d > kTolMm + print_mm)
-        ADD_FAILURE() << "move to " << m.end.transpose() << " (kind " << m.kind << ") passes "
-                      << p.transpose() << ", " << d << " mm off the strokes";
-      c.worst_off_stroke_mm = std::max(c.worst_off_stroke_mm, d);
-    }
-  }
-  NearSet full_depth;
-  for (const CanonMove& m : cuts)
-    if (std::abs(m.end.z() + s.depth_mm) < 1e-3) full_depth.add(m.path());
-  for (const PlacedGlyph& g : fig.glyphs)
-    for (const Element& e : g.elements)
-      if (e.laser())
-        for (const Point& p : samples(e, 0.05))
-          c.worst_uncovered_mm = std::max(c.worst_uncovered_mm, full_depth.distance(p, 1.0));
-  // Sideways rapids only at or above the surface.
-  for (const CanonMove& m : run.moves)
-    if (m.kind == CanonMove::traverse && (m.end.head<2>() - m.start.head<2>()).norm() > 1e-9) {
-      EXPECT_GE(m.start.z(), s.safe_z_mm - print_mm);
-      EXPECT_GE(m.end.z(), s.safe_z_mm - print_mm);
-    }
-  double deepest = 0;
-  for (const CanonMove& m : run.moves) deepest = std::min(deepest, m.end.z());
-  EXPECT_NEAR(deepest, -s.depth_mm, print_mm);
-  EXPECT_LE(c.worst_off_stroke_mm, kTolMm + print_mm);
-  EXPECT_LE(c.worst_uncovered_mm, kTolMm + print_mm);
-  return c;
-}
 
 using Case = std::tuple<Dialect, Fit, Variant>;
 
@@ -98,7 +45,7 @@ TEST_P(DepressionRs274, RunsToTheEndAndCutsExactlyTheStrokes) {
   const Rs274Run run = run_rs274(program, file);
   ASSERT_EQ(run.exit_code, 0) << run.file << ":\n" << run.errors;
 
-  const Checked c = check_depression(fig, run, s, 0.0001);
+  const DepressionCheck c = check_depression(fig, run, s, 0.0001);
   EXPECT_GT(c.arcs, 0u) << "arcs must stay arcs";
   EXPECT_LE(stats.max_arc_radius_error_mm, 0.005);
   // Each of the six letters is one subprogram, called once (linuxcnc) or when unrotated (fanuc).
@@ -155,7 +102,7 @@ TEST(DepressionRs274, SinglePassWithEllipseChords) {
   const std::string program = write_gcode(depression_toolpath(fig, s), GcodeOptions{}, &stats);
   const Rs274Run run = run_rs274(program, "depression_chords");
   ASSERT_EQ(run.exit_code, 0) << run.errors;
-  const Checked c = check_depression(fig, run, s, 0.0001);
+  const DepressionCheck c = check_depression(fig, run, s, 0.0001);
   EXPECT_EQ(c.arcs, 0u) << "sheared circles become chords when asked";
 }
 

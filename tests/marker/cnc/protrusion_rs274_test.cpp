@@ -11,7 +11,7 @@
 #include "marker/cnc/clipper_paths.hpp"
 #include "marker/cnc/gcode_writer.hpp"
 #include "marker/cnc/protrusion.hpp"
-#include "path_checks.hpp"
+#include "cnc_checks.hpp"
 #include "rs274.hpp"
 #include "test_figures.hpp"
 
@@ -19,65 +19,6 @@ namespace mark::test {
 namespace {
 
 using ClipperLib::Paths;
-
-// The strokes are flattened for fast distance queries: distances are overstated by at most this.
-constexpr double kStrokeChordMm = 0.0002;
-// What "closer than the tool radius" forgives: the flattening above plus rs274's printout.
-constexpr double kClosenessTolMm = kStrokeChordMm + 0.0002;
-
-struct ProtrusionCheck {
-  double closest_to_letters_mm = 1e9;  // smallest distance of a tool-centre position from L
-  double uncut_mm2 = 0;                // material left inside the plate, outside the letters
-  int wider_than_tool = 0;             // places where a whole tool disc of material is left
-};
-
-// Checks on a grid of points over the plate (spacing h): a point is cut when a full-depth move
-// passes within the tool radius; an uncut point whose distance from every move is at least
-// r + ρ, from the letters at least ρ and from the plate edge at least ρ is the centre of a
-// disc of radius ρ left standing. With ρ = 0.95 r and h ≤ 0.07 r every leftover region that
-// holds a whole tool disc contains such a grid point.
-ProtrusionCheck check_protrusion(const Figure& fig, const Rs274Run& run, const CutSettings& s,
-                                 const ProtrusionResult& res) {
-  ProtrusionCheck c;
-  const double r = s.tool_diameter_mm / 2, half_w = res.stroke_width_mm / 2;
-  const SegmentGrid strokes = stroke_grid(fig, res.plate, kStrokeChordMm);
-  // Distance from the letter region = distance from the strokes − half the stroke width.
-  for (const CanonMove& m : run.moves) {
-    if (m.start.z() >= 0 && m.end.z() >= 0) continue;
-    const double near = half_w + r + 0.1;  // farther is clearly fine
-    for (const Point& p : samples(m.path(), 0.02))
-      c.closest_to_letters_mm = std::min(c.closest_to_letters_mm, strokes.distance(p, near) - half_w);
-  }
-  SegmentGrid cuts(res.plate, 0.25);
-  for (const CanonMove& m : run.moves) {
-    if (std::abs(m.end.z() + s.depth_mm) > 1e-3 || std::abs(m.start.z() + s.depth_mm) > 1e-3) continue;
-    if (m.kind != CanonMove::arc) {
-      cuts.add(m.start.head<2>(), m.end.head<2>());
-      continue;
-    }
-    const std::vector<Point> pts = samples(m.path(), 0.02);  // chords 0.1 µm inside the arc
-    for (std::size_t k = 1; k < pts.size(); ++k) cuts.add(pts[k - 1], pts[k]);
-  }
-  const double rho = 0.95 * r, h = std::min(0.02, 0.07 * r);
-  for (double x = res.plate.min.x() + h / 2; x < res.plate.max.x(); x += h)
-    for (double y = res.plate.min.y() + h / 2; y < res.plate.max.y(); y += h) {
-      const Point p(x, y);
-      if (cuts.any_within(p, r)) continue;
-      const double d_cut = cuts.distance(p, r + rho);
-      const double d_letters = strokes.distance(p, half_w + rho) - half_w;
-      if (d_letters <= 0) continue;
-      c.uncut_mm2 += h * h;
-      const double d_edge = std::min({x - res.plate.min.x(), res.plate.max.x() - x,
-                                      y - res.plate.min.y(), res.plate.max.y() - y});
-      if (d_cut >= r + rho && d_letters >= rho && d_edge >= rho) ++c.wider_than_tool;
-    }
-  return c;
-}
-
-enum class Variant { upright, mirrored, sheared };
-const char* name(Dialect d) { return d == Dialect::linuxcnc ? "linuxcnc" : d == Dialect::fanuc ? "fanuc" : "plain"; }
-const char* name(Fit f) { return f == Fit::linear ? "linear" : f == Fit::inclined ? "inclined" : "circular"; }
-const char* name(Variant v) { return v == Variant::upright ? "upright" : v == Variant::mirrored ? "mirrored" : "sheared"; }
 
 using Case = std::tuple<Dialect, Fit, Variant>;
 class ProtrusionRs274 : public ::testing::TestWithParam<Case> {};
@@ -157,11 +98,6 @@ TEST(Protrusion, RejectsAStepOverLargerThanTheToolRadius) {
   EXPECT_THROW(protrusion_toolpath(make_figure({}), s, ps), InputError);
 }
 
-}  // namespace
-}  // namespace mark::test
-
-namespace mark::test {
-namespace {
 
 // --cutter-comp: the walls go out as part contours under G41 and the control offsets them. The
 // interpreter's output is the compensated tool centre, so the same checks apply unchanged.

@@ -10,6 +10,9 @@ namespace {
 
 using namespace ClipperLib;
 
+constexpr double kInnerArcTolMm = 0.005;
+constexpr double kCleanNm = 500;  // drop vertices this close to their neighbours' line
+
 // One connected piece of an eroded region: its outer boundary and holes.
 struct Component {
   Path outer;
@@ -48,17 +51,30 @@ void emit_component(std::vector<Component>& comps, std::size_t idx, std::vector<
 }  // namespace
 
 std::vector<PocketLoop> pocket_loops(const Paths& region, double stepover_mm, double arc_tol_mm) {
+  // Inner loops only need to stay within a step-over of each other, not to hug a wall: they use
+  // a coarser arc tolerance, and each level is offset from the previous one (eroding twice by
+  // s is eroding by 2s), which keeps every offset small and fast.
+  const double inner_tol_mm = std::max(arc_tol_mm, std::min(kInnerArcTolMm, 0.02 * stepover_mm));
   std::vector<Component> comps;
   std::vector<std::size_t> first_of_level;
+  Paths level_paths = region;
   for (int level = 0;; ++level) {
-    ClipperOffset co(2.0, arc_tol_mm * kNmPerMm);
-    co.AddPaths(region, jtRound, etClosedPolygon);
     PolyTree tree;
-    co.Execute(tree, -level * stepover_mm * kNmPerMm);
+    if (level == 0) {
+      Clipper c;  // the region itself, as a tree of outer boundaries and holes
+      c.AddPaths(region, ptSubject, true);
+      c.Execute(ctUnion, tree, pftNonZero, pftNonZero);
+    } else {
+      ClipperOffset co(2.0, inner_tol_mm * kNmPerMm);
+      co.AddPaths(level_paths, jtRound, etClosedPolygon);
+      co.Execute(tree, -stepover_mm * kNmPerMm);
+    }
     const std::size_t before = comps.size();
     collect(tree, level, comps);
     if (comps.size() == before) break;
     first_of_level.push_back(before);
+    PolyTreeToPaths(tree, level_paths);
+    CleanPolygons(level_paths, kCleanNm);
     // Hang each new component under the component of the previous level that holds it.
     if (level > 0)
       for (std::size_t k = before; k < comps.size(); ++k)

@@ -12,15 +12,15 @@ namespace {
 
 using namespace ClipperLib;
 
-constexpr double kChordTolMm = 0.0005;  // strokes flattened for Clipper
-constexpr double kArcTolMm = 0.001;     // Clipper's round joins
+constexpr double kChordTolMm = 0.001;  // strokes flattened for Clipper
+constexpr double kArcTolMm = 0.002;    // Clipper's round joins
 // Polygons approximate round offsets from inside; growing the keep-out by the approximation
 // error keeps the tool centre at least a tool radius from the true letter region. Clipper
 // rounds the number of steps of a round join, so a short join may bow up to (1.5)² times its
 // arc tolerance: hence 3 × the tolerance, plus the chords of the flattened strokes.
 constexpr double kKeepOutSlackMm = kChordTolMm + 3 * kArcTolMm;
 // Uncut material thinner than this is the film the slack leaves, not a region worth reporting.
-constexpr double kUncutFilmMm = 0.01;
+constexpr double kUncutFilmMm = 0.02;
 
 std::string mm(double v) {
   std::ostringstream s;
@@ -29,10 +29,9 @@ std::string mm(double v) {
 }
 
 std::vector<UncutRegion> uncut_regions(const Paths& material, const Paths& cleared, Paths& left) {
-  left = difference(material, cleared);
+  const Paths all = difference(material, cleared);
   // Opening: drop slivers thinner than the film, keep the rest at full size.
-  left = offset_region(offset_region(left, -kUncutFilmMm / 2, kArcTolMm), kUncutFilmMm / 2, kArcTolMm);
-  left = intersection(left, difference(material, cleared));
+  left = intersection(offset_region(offset_region(all, -kUncutFilmMm / 2, kArcTolMm), kUncutFilmMm / 2, kArcTolMm), all);
   std::vector<UncutRegion> out;
   for (const Path& p : left) {
     if (!Orientation(p)) continue;  // holes belong to the region around them

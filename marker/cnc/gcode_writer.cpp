@@ -197,8 +197,10 @@ class Writer {
     frame_ = Frame::literal;
     for (std::size_t k = 0; k < tp_.subs.size(); ++k) {
       if (!called_sub_[k]) continue;
-      std::string head = std::to_string(o_.first_subprogram_number + static_cast<int>(k));
-      head.insert(0, "O").append(" ").append(comment(tp_.subs[k].label, true));
+      char number[16];
+      std::snprintf(number, sizeof number, "O%d ", o_.first_subprogram_number + static_cast<int>(k));
+      std::string head(number);
+      head += comment(tp_.subs[k].label, true);
       line(head);
       forget();
       for (const ToolMove& m : tp_.subs[k].body) move(m);

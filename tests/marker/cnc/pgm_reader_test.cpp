@@ -69,9 +69,9 @@ TEST(PgmReader, RandomCorruptionNeverCrashes) {
         switch (rng() % 3) {
           case 0: s[at] = static_cast<char>(rng() % 256); break;
           case 1: s.erase(at, 1 + rng() % 3); break;
-          default: s.insert(at, 1, "0123456789 #\nP5-"[rng() % 16]); break;
+          default: s.insert(s.begin() + static_cast<std::ptrdiff_t>(at), "0123456789 #\nP5-"[rng() % 16]); break;
         }
-        if (s.empty()) s = "P";
+        if (s.empty()) s.push_back('P');
       }
       try {
         const GrayImage img = parse_pgm(s, "fuzz.pgm");

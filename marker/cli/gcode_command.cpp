@@ -152,8 +152,8 @@ Command make_gcode_command() {
         sub->add_option("--dialect", a->dialect, "linuxcnc (o-word subprograms), fanuc (O/M98/M99), plain (grbl, inlined)")
             ->capture_default_str();
         sub->add_option("--units", a->units, "output units: mm (G21) or inch (G20)")->capture_default_str();
-        sub->add_option("--header", a->gcode.header, "line after the program's modal preamble (repeatable)");
-        sub->add_option("--footer", a->gcode.footer, "line before the program end (repeatable)");
+        sub->add_option("--header", a->gcode.header, "line after the program's modal preamble (repeatable)")->allow_extra_args(false);
+        sub->add_option("--footer", a->gcode.footer, "line before the program end (repeatable)")->allow_extra_args(false);
         sub->add_option("--title", a->gcode.title, "comment at the top of the program");
         sub->add_flag("--m2", a->m2, "end with M2 instead of M30");
         sub->add_option("--arc-tolerance", a->cut.arcs.tolerance_mm,

@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "fonts/error.hpp"
 #include "fonts/stroke_font.hpp"
 #include "marker/cnc/cut_moves.hpp"
 #include "marker/cnc/strokes.hpp"
@@ -89,7 +90,7 @@ Toolpath depression_toolpath(const Figure& figure, const CutSettings& s) {
     calls.push_back({it->second, g.origin, g.rotation_rad});
     items.push_back(VisitItem::fixed(place * entries[it->second], place * exits[it->second]));
   }
-  if (calls.empty()) return tp;
+  if (calls.empty()) throw InputError("depression: the text has no strokes to engrave");
   for (const VisitStep& step : plan_visit_order(items, items.front().entry)) tp.steps.push_back(calls[step.item]);
   return tp;
 }

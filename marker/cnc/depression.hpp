@@ -9,7 +9,7 @@
 
 namespace mark {
 
-// Throws InputError for impossible settings.
+// Throws InputError for impossible settings and for a text without strokes (only spaces).
 Toolpath depression_toolpath(const Figure& figure, const CutSettings& settings);
 
 }  // namespace mark

@@ -221,7 +221,8 @@ TEST(GcodeCli, BadInputIsOneLineAndNoFile) {
         {"gcode", "A", "--depth", "-1", "-o", file},
         {"gcode", "A", "--mode", "protrusion", "--stepover", "5", "-o", file},
         {"gcode", "A", "--header", "M30%", "-o", file},
-        {"gcode", "A", "--tool-image", "x.pgm", "-o", file}}) {
+        {"gcode", "A", "--tool-image", "x.pgm", "-o", file},
+        {"gcode", "   ", "-o", file}}) {
     const CliResult r = run_cli(args);
     EXPECT_EQ(r.code, 1) << args[2];
     EXPECT_EQ(r.err.rfind("marker: ", 0), 0u) << r.err;

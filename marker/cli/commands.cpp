@@ -7,6 +7,7 @@ std::vector<Command> all_commands() {
   c.push_back(make_preview_command());
   c.push_back(make_layout_command());
   c.push_back(make_fonts_command());
+  c.push_back(make_mark_command());
   c.push_back(make_peen_command());
   c.push_back(make_gcode_command());
   c.push_back(make_tool_measure_command());

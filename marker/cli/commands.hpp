@@ -25,6 +25,7 @@ class Command {
 Command make_preview_command();
 Command make_layout_command();
 Command make_fonts_command();
+Command make_mark_command();
 Command make_peen_command();
 Command make_gcode_command();
 Command make_tool_measure_command();

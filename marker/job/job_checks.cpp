@@ -1,0 +1,52 @@
+#include "marker/job/job_checks.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "fonts/error.hpp"
+#include "marker/layout/layout.hpp"
+
+namespace mark {
+namespace {
+
+std::string num(double v, int precision = 1) {
+  std::ostringstream s;
+  s.precision(precision);
+  s << std::fixed << v;
+  return s.str();
+}
+
+void check_speed(double speed_mm_s, const char* what, const HeadModel& head) {
+  if (!(speed_mm_s > 0) || !std::isfinite(speed_mm_s) || speed_mm_s > head.max_speed_mm_s)
+    throw InputError(std::string(what) + " " + num(speed_mm_s) + " mm/s is outside head " +
+                     head.name + "'s limits (above 0, at most " + num(head.max_speed_mm_s, 0) +
+                     " mm/s)");
+}
+
+}  // namespace
+
+void check_pen(const Pen& pen, const HeadModel& head) {
+  check_speed(pen.mark_speed_mm_s, "marking speed", head);
+  check_speed(pen.jump_speed_mm_s, "jump speed", head);
+  if (pen.join_speed_mm_s != 0) check_speed(pen.join_speed_mm_s, "blanking join speed", head);
+  if (!(pen.tick_s >= kMinTick_s) || !(pen.tick_s <= head.max_tick_s()))
+    throw InputError("tick " + num(pen.tick_s * 1e6, 2) + " µs is outside head " + head.name +
+                     "'s limits (" + num(kMinTick_s * 1e6, 0) + " to " +
+                     num(head.max_tick_s() * 1e6, 1) + " µs, 20 % of its tracking error)");
+  for (double d : {pen.laser_on_delay_s, pen.laser_off_delay_s, pen.jump_delay_s,
+                   pen.mark_delay_s, pen.polygon_delay_s, pen.run_in_mm.value_or(0),
+                   pen.min_run_in_mm, pen.run_out_mm, pen.settle_mm})
+    if (!(d >= 0) || !std::isfinite(d))
+      throw InputError("pen delays and extension lengths must be finite and not negative");
+}
+
+void check_plan(const Plan& plan, const HeadModel& head) {
+  check_pen(plan.pen, head);
+  if (plan.strokes == 0) throw InputError("the text has nothing to mark (no lit strokes)");
+  require_inside(plan.bounds(), Field{head.field_mm},
+                 plan.pen.corner == CornerStrategy::blanking
+                     ? "the job (figure plus blanking lines)"
+                     : "the job (figure plus jumps)");
+}
+
+}  // namespace mark

@@ -1,0 +1,50 @@
+#pragma once
+// Drawing commands: what the planner hands the locus generator. A command is one element
+// traversed at one constant speed (jump, mark line, mark circular arc, mark elliptical arc) or a
+// dwell (the mirrors hold still for a number of ticks). Blanking lines are line commands with the
+// laser off; `role` says why a command exists, so tests and previews can tell them apart.
+#include <cstdint>
+#include <string_view>
+
+#include "fonts/element.hpp"
+
+namespace mark {
+
+enum class CommandKind { jump, line, arc, ellipse, dwell };
+
+enum class CommandRole {
+  stroke,      // a lit element of the figure
+  jump,        // travel between strokes, laser off, at jump speed
+  run_in,      // blanking: extension backward from a lit element's start, laser off
+  run_out,     // blanking: extension forward from a lit element's end, laser off
+  blank_join,  // blanking: the line joining a run-out to the next run-in, laser off
+  delay        // a dwell: jump / mark / polygon delay
+};
+
+struct Command {
+  CommandKind kind;
+  CommandRole role;
+  Element path;                // for a dwell: a zero-length line at the dwell point
+  double speed_mm_s = 0;       // jumps and marks
+  std::uint32_t dwell_ticks = 0;
+  // The path's length, computed once (an ellipse's takes a quadrature); 0 for a dwell.
+  double length = 0;
+
+  bool laser() const { return path.laser(); }
+  Point start() const { return path.start(); }
+  Point end() const { return path.end(); }
+  double length_mm() const { return length; }
+
+  static Command jump(const Point& from, const Point& to, double speed_mm_s);
+  // A lit (or, for blanking lines, unlit) element at the given speed; kind follows the element.
+  static Command mark(const Element& element, double speed_mm_s, CommandRole role);
+  // The same with the element's length already known.
+  static Command mark(const Element& element, double speed_mm_s, CommandRole role,
+                      double length_mm);
+  static Command dwell(const Point& at, std::uint32_t ticks, bool laser);
+};
+
+std::string_view to_string(CommandKind kind);
+std::string_view to_string(CommandRole role);
+
+}  // namespace mark

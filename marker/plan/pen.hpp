@@ -1,0 +1,85 @@
+#pragma once
+// A pen: how the planner turns lit elements into commands — speeds, the tick of the locus,
+// which corner strategy to use and its parameters, and the laser delay line's edge delays.
+// Defaults come from the head's tracking error τ (dynamics.md §2.2 and §3.2).
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace mark {
+
+enum class CornerStrategy {
+  blanking,  // the seed's claim: laser-off run-out, join and run-in lines at sharp corners and
+             // at every stroke's start and end; the laser bit delayed by τ against the mirrors
+  delays,    // the RTC model: laser-on/off delays, jump, mark and polygon delays
+  none       // neither (for comparison)
+};
+
+std::string_view to_string(CornerStrategy strategy);
+// "blanking", "delays" or "none"; throws InputError naming the value otherwise.
+CornerStrategy parse_corner_strategy(std::string_view name);
+
+struct Pen {
+  double mark_speed_mm_s = 1000;
+  double jump_speed_mm_s = 5000;
+  double tick_s = 10e-6;
+  CornerStrategy corner = CornerStrategy::blanking;
+
+  // Laser delay line (every strategy): laser-on edges and laser-off edges leave the line memory
+  // this much later than the coordinates they came with.
+  double laser_on_delay_s = 0;
+  double laser_off_delay_s = 0;
+
+  // Scanner delays (strategy `delays`), dwells of the mirrors.
+  double jump_delay_s = 0;     // after every jump (at least)
+  // Variable jump delay: when > 0, a jump's delay is lengthened until the first-order model
+  // says its transient has decayed to this when the laser switches on (RTC's length-dependent
+  // jump delay, from the model rather than a table). 0: the fixed jump delay only.
+  double jump_settle_mm = 0;
+  double mark_delay_s = 0;     // after the last mark of a stroke
+  double polygon_delay_s = 0;  // between two marks of a stroke, × (1 − cos φ)
+
+  // Blanking (strategy `blanking`).
+  double blank_angle_deg = 0;  // lit corners turning by more than this get blanking lines
+  double run_out_mm = 0;       // the forward extension after every lit element's end
+  // The backward extension before every lit element's start. Unset: sized per element by the
+  // head's first-order model so that the transient left by the moves before it (run-out, join
+  // or jump, the run-in's own start) has decayed to `settle_mm` when the laser switches on, and
+  // never shorter than `min_run_in_mm`.
+  std::optional<double> run_in_mm;
+  double min_run_in_mm = 0;
+  double settle_mm = 0.001;
+  double join_speed_mm_s = 0;   // speed on the joining line between a run-out and a run-in
+
+  // The head's tracking error τ: sizes the automatic run-ins and variable jump delays.
+  double tracking_error_s = 0;
+
+  // Seconds → whole ticks of this pen (rounded to nearest).
+  std::uint32_t ticks(double seconds) const;
+};
+
+// The multiples of v·τ and of τ the defaults are built from. The blanking values were chosen
+// with the simulated scanner (`cps --speed V --run-out K --settle E --join-speed J`, and
+// tests/marker/blanking_sim_test.cpp): a run-out of exactly v·τ is what the τ-delayed laser-off
+// needs (0.8 leaves a lit tail, more only costs time); run-ins sized by the settling model to
+// 1 µm; the join at jump speed (3 % faster than at marking speed for the same quality).
+struct PenRules {
+  // RTC starting rule (SCANLAB manuals, §6.1 of every head manual).
+  double laser_on = 0.6, laser_off = 1.2, jump = 2.0, mark = 1.0, polygon = 0.5;
+  // Variable jump delay of the delays strategy: the jump transient left at laser on, µm
+  // (0 = the fixed 2τ jump delay only).
+  double jump_settle_um = 1.0;
+  // Blanking: extension lengths as multiples of v·τ (the run-in's is its minimum; unset run_in
+  // sizes it by the settling model), the transient allowed at laser on, the join at jump speed.
+  std::optional<double> run_in;
+  double min_run_in = 1.0, run_out = 1.0, settle_um = 1.0;
+  // Corners turning less than this stay lit (the lag's corner cut there is below a few µm at
+  // marking speeds where the rest of the figure keeps its quality).
+  double blank_angle_deg = 8.0;
+};
+
+// A pen for a head with tracking error `tracking_error_s`, every parameter from the rules.
+Pen default_pen(CornerStrategy strategy, double tracking_error_s, double mark_speed_mm_s,
+                double jump_speed_mm_s, double tick_s = 10e-6, const PenRules& rules = {});
+
+}  // namespace mark

@@ -5,7 +5,7 @@
 #include "fonts/error.hpp"
 #include "fonts/stroke_font.hpp"
 #include "marker/cnc/cut_moves.hpp"
-#include "marker/cnc/strokes.hpp"
+#include "marker/cnc/cut_strokes.hpp"
 #include "marker/order/visit_order.hpp"
 
 namespace mark {
@@ -16,11 +16,11 @@ namespace {
 // backward) so no pass starts with a rapid; a closed stroke goes round the same way each pass.
 ToolSubprogram letter_subprogram(const ShapedGlyph& shape, const CutSettings& s,
                                  const std::vector<double>& depths, Point& entry, Point& exit) {
-  std::vector<Stroke> strokes = chain_strokes(shape.elements);
+  std::vector<CutStroke> strokes = chain_cut_strokes(shape.elements);
   std::vector<std::vector<Element>> paths;
   std::vector<VisitItem> items;
   const bool even = depths.size() % 2 == 0;
-  for (const Stroke& st : strokes) {
+  for (const CutStroke& st : strokes) {
     paths.push_back(machinable(st.elements, s.arcs));
     const Point a = st.start(), b = st.end();
     if (st.closed() || !even)

@@ -1,18 +1,18 @@
-#include "marker/cnc/strokes.hpp"
+#include "marker/cnc/cut_strokes.hpp"
 
 #include <algorithm>
 
 namespace mark {
 
-Stroke Stroke::reversed() const {
-  Stroke r;
+CutStroke CutStroke::reversed() const {
+  CutStroke r;
   r.elements.reserve(elements.size());
   for (auto it = elements.rbegin(); it != elements.rend(); ++it) r.elements.push_back(it->reversed());
   return r;
 }
 
-std::vector<Stroke> chain_strokes(const std::vector<Element>& elements, double tol) {
-  std::vector<Stroke> runs;
+std::vector<CutStroke> chain_cut_strokes(const std::vector<Element>& elements, double tol) {
+  std::vector<CutStroke> runs;
   bool open = false;
   for (const Element& e : elements) {
     if (!e.laser()) {
@@ -22,7 +22,7 @@ std::vector<Stroke> chain_strokes(const std::vector<Element>& elements, double t
     if (open && (runs.back().end() - e.start()).norm() <= tol)
       runs.back().elements.push_back(e);
     else
-      runs.push_back(Stroke{{e}});
+      runs.push_back(CutStroke{{e}});
     open = true;
   }
   // Join runs end to end (either may be reversed) until no two open runs share an endpoint.
@@ -33,7 +33,7 @@ std::vector<Stroke> chain_strokes(const std::vector<Element>& elements, double t
       if (runs[i].closed(tol)) continue;
       for (std::size_t j = i + 1; j < runs.size() && !joined; ++j) {
         if (runs[j].closed(tol)) continue;
-        Stroke a = runs[i], b = runs[j];
+        CutStroke a = runs[i], b = runs[j];
         if ((a.end() - b.start()).norm() <= tol) {
         } else if ((a.end() - b.end()).norm() <= tol) {
           b = b.reversed();

@@ -9,6 +9,7 @@ packages=(
   libusb-1.0-0-dev libcli11-dev nlohmann-json3-dev libpolyclipping-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   hershey-fonts-data librecad-data
+  libpython3.11 libedit2 libtirpc3   # runtime of LinuxCNC's rs274 (G-code validator, fetch_rs274.sh)
 )
 
 missing=()
@@ -23,3 +24,6 @@ if ((${#missing[@]})); then
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
+
+# The CNC tests validate every G-code program with LinuxCNC's rs274, unpacked (not installed) here.
+"$(dirname "${BASH_SOURCE[0]}")/fetch_rs274.sh"

@@ -9,6 +9,8 @@ std::vector<Command> all_commands() {
   c.push_back(make_fonts_command());
   c.push_back(make_mark_command());
   c.push_back(make_peen_command());
+  c.push_back(make_gcode_command());
+  c.push_back(make_tool_measure_command());
   return c;
 }
 

@@ -27,6 +27,8 @@ Command make_layout_command();
 Command make_fonts_command();
 Command make_mark_command();
 Command make_peen_command();
+Command make_gcode_command();
+Command make_tool_measure_command();
 
 std::vector<Command> all_commands();
 

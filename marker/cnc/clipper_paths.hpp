@@ -1,0 +1,45 @@
+#pragma once
+// The bridge to Clipper 1 (Debian libpolyclipping): millimetres ↔ integer nanometres, strokes as
+// open polylines, and the few region queries the pocketing needs. Clipper works on integers,
+// and its round joins take their step count from the offset in those units, so everything is
+// scaled to 1 unit = 1 nm first.
+#include <polyclipping/clipper.hpp>
+
+#include <vector>
+
+#include "fonts/element.hpp"
+#include "marker/layout/figure.hpp"
+
+namespace mark {
+
+inline constexpr double kNmPerMm = 1e6;
+
+ClipperLib::IntPoint to_nm(const Point& p);
+Point to_mm(const ClipperLib::IntPoint& p);
+std::vector<Point> to_mm(const ClipperLib::Path& path);
+
+// Every lit stroke of the Figure (field frame) as an open polyline, flattened within chord_tol_mm.
+ClipperLib::Paths stroke_polylines(const Figure& figure, double chord_tol_mm);
+
+// Strokes grown by `radius_mm` with round ends and joins (the region a round tool or a stroke
+// of width 2·radius covers), as a union of closed polygons.
+ClipperLib::Paths grow_strokes(const ClipperLib::Paths& strokes, double radius_mm,
+                               double arc_tol_mm);
+
+// Closed polygons offset by delta_mm (negative shrinks), round joins.
+ClipperLib::Paths offset_region(const ClipperLib::Paths& region, double delta_mm, double arc_tol_mm);
+
+ClipperLib::Paths difference(const ClipperLib::Paths& a, const ClipperLib::Paths& b);
+ClipperLib::Paths intersection(const ClipperLib::Paths& a, const ClipperLib::Paths& b);
+
+// Total area (outer boundaries positive, holes negative), mm².
+double area_mm2(const ClipperLib::Paths& region);
+// Inside the region under the even-odd rule (boundary counts as inside).
+bool contains(const ClipperLib::Paths& region, const Point& p);
+
+// Does the segment ab stay inside the region (midpoint inside, no boundary edge crossed)?
+bool segment_inside(const ClipperLib::Paths& region, const Point& a, const Point& b);
+
+ClipperLib::Path rectangle_nm(const Box& box);
+
+}  // namespace mark

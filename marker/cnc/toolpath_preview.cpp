@@ -1,0 +1,116 @@
+#include "marker/cnc/toolpath_preview.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "marker/cnc/clipper_paths.hpp"
+#include "marker/preview/canvas.hpp"
+
+namespace mark {
+namespace {
+
+constexpr double kWidthPx = 1200;
+
+void add_paths(cairo_t* cr, const ClipperLib::Paths& paths) {
+  for (const ClipperLib::Path& p : paths) {
+    if (p.empty()) continue;
+    const Point a = to_mm(p.front());
+    cairo_move_to(cr, a.x(), a.y());
+    for (const ClipperLib::IntPoint& q : p) {
+      const Point b = to_mm(q);
+      cairo_line_to(cr, b.x(), b.y());
+    }
+    cairo_close_path(cr);
+  }
+}
+
+void fill_paths(cairo_t* cr, const ClipperLib::Paths& paths, double r, double g, double b) {
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+  add_paths(cr, paths);
+  cairo_set_source_rgb(cr, r, g, b);
+  cairo_fill(cr);
+}
+
+// The XY path of one move from `from`.
+void add_move(cairo_t* cr, const Point& from, const ToolMove& m) {
+  cairo_move_to(cr, from.x(), from.y());
+  const Point to(m.end.x(), m.end.y());
+  if (m.kind != MoveKind::arc) {
+    cairo_line_to(cr, to.x(), to.y());
+    return;
+  }
+  const double r = (from - m.center).norm();
+  const double a0 = std::atan2(from.y() - m.center.y(), from.x() - m.center.x());
+  const double a1 = std::atan2(to.y() - m.center.y(), to.x() - m.center.x());
+  if (m.ccw)
+    cairo_arc(cr, m.center.x(), m.center.y(), r, a0, a1);
+  else
+    cairo_arc_negative(cr, m.center.x(), m.center.y(), r, a0, a1);
+}
+
+}  // namespace
+
+void write_toolpath_preview(const Figure& figure, const Toolpath& toolpath, double tool_diameter_mm,
+                            const ProtrusionResult* prot, const std::string& path) {
+  const std::vector<ToolMove> moves = expand_moves(toolpath);
+  Box view = figure.bounds();
+  if (prot) view.add(prot->plate);
+  for (const ToolMove& m : moves) view.add(Point(m.end.x(), m.end.y()));
+  const double pad = std::max(0.05 * std::max(view.width(), view.height()), tool_diameter_mm);
+  view.min -= Point(pad, pad);
+  view.max += Point(pad, pad);
+  Canvas canvas(path, view, kWidthPx / std::max(view.width(), 1e-3));
+  cairo_t* cr = canvas.cr();
+
+  if (prot) {
+    cairo_rectangle(cr, prot->plate.min.x(), prot->plate.min.y(), prot->plate.width(), prot->plate.height());
+    cairo_set_source_rgb(cr, 0.93, 0.86, 0.62);  // the stock
+    cairo_fill(cr);
+    fill_paths(cr, prot->cleared, 0.80, 0.89, 0.98);
+    fill_paths(cr, prot->letters, 0.93, 0.78, 0.35);  // raised letters
+    fill_paths(cr, prot->uncut_region, 0.9, 0.05, 0.05);
+  }
+
+  // Depression: the groove the tool cuts at full depth, one tool wide.
+  double deepest = 0;
+  for (const ToolMove& m : moves) deepest = std::min(deepest, m.end.z());
+  Point at(0, 0);
+  bool known = false;
+  if (!prot) {
+    for (const ToolMove& m : moves) {
+      if (known && m.kind != MoveKind::rapid && m.end.z() <= deepest + 1e-9) add_move(cr, at, m);
+      at = Point(m.end.x(), m.end.y());
+      known = true;
+    }
+    cairo_set_source_rgb(cr, 0.80, 0.89, 0.98);
+    cairo_set_line_width(cr, tool_diameter_mm);
+    cairo_stroke(cr);
+  }
+  // Tool-centre path: cuts solid, rapids dashed.
+  known = false;
+  for (const ToolMove& m : moves) {
+    if (known && m.kind != MoveKind::rapid) add_move(cr, at, m);
+    at = Point(m.end.x(), m.end.y());
+    known = true;
+  }
+  cairo_set_source_rgb(cr, 0.05, 0.15, 0.55);
+  canvas.set_line_px(1.0);
+  cairo_stroke(cr);
+  known = false;
+  for (const ToolMove& m : moves) {
+    if (known && m.kind == MoveKind::rapid && (Point(m.end.x(), m.end.y()) - at).norm() > 1e-9) {
+      cairo_move_to(cr, at.x(), at.y());
+      cairo_line_to(cr, m.end.x(), m.end.y());
+    }
+    at = Point(m.end.x(), m.end.y());
+    known = true;
+  }
+  cairo_set_source_rgba(cr, 0.85, 0.2, 0.1, 0.7);
+  canvas.set_line_px(0.8);
+  canvas.set_dash_px(4, 3);
+  cairo_stroke(cr);
+  canvas.set_dash_px(0, 0);
+  canvas.finish();
+}
+
+}  // namespace mark

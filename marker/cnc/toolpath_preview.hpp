@@ -1,0 +1,18 @@
+#pragma once
+// Preview of a CNC toolpath as SVG or PNG (by the file's extension): what the tool removes
+// (engraved grooves one tool wide, or the cleared pocket), raised letters, material the tool
+// cannot reach in red, the tool-centre path solid, rapid moves dashed.
+#include <string>
+
+#include "marker/cnc/protrusion.hpp"
+#include "marker/cnc/toolpath.hpp"
+#include "marker/layout/figure.hpp"
+
+namespace mark {
+
+// `protrusion` is null for a depression toolpath. Throws InputError naming the file when it
+// cannot be written or its extension is not .svg/.png.
+void write_toolpath_preview(const Figure& figure, const Toolpath& toolpath, double tool_diameter_mm,
+                            const ProtrusionResult* protrusion, const std::string& path);
+
+}  // namespace mark

@@ -1,0 +1,235 @@
+// `marker gcode` and `marker tool-measure` end to end, in-process, with the built-in font and
+// the real layout: every program the command writes — all dialects, both modes, linear /
+// inclined / circular fitting, mirrored, sheared, width factor (ellipses), inch — is
+// interpreted by LinuxCNC's rs274 and checked against the same Figure.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cnc_checks.hpp"
+#include "marker/cli/cli.hpp"
+#include "marker/cli/layout_options.hpp"
+#include "marker/cnc/protrusion.hpp"
+#include "tool_render.hpp"
+
+namespace mark::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliResult {
+  int code;
+  std::string out, err;
+};
+
+CliResult run_cli(std::vector<std::string> args) {
+  args.insert(args.begin(), "marker");
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  const int code = cli::run(static_cast<int>(argv.size()), argv.data());
+  return {code, testing::internal::GetCapturedStdout(), testing::internal::GetCapturedStderr()};
+}
+
+std::string out_path(const std::string& name) {
+  const fs::path dir = fs::path(MARKER_BINARY_DIR) / "cnc_cli";
+  fs::create_directories(dir);
+  fs::remove(dir / name);
+  return (dir / name).string();
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// The number printed right after `label`, or NaN.
+double number_after(const std::string& text, const std::string& label) {
+  const std::size_t at = text.find(label);
+  return at == std::string::npos ? std::nan("") : std::strtod(text.c_str() + at + label.size(), nullptr);
+}
+
+// The layout part of a command line, and the same as LayoutArgs for building the Figure here.
+struct Fitting {
+  std::string name;
+  std::vector<std::string> args;
+  cli::LayoutArgs layout;
+};
+
+std::vector<Fitting> fittings() {
+  std::vector<Fitting> f;
+  cli::LayoutArgs base;
+  base.height_mm = 5;
+  {
+    Fitting x{"linear", {"--height", "5", "--x", "-15"}, base};
+    x.layout.x_mm = -15;
+    f.push_back(x);
+  }
+  {
+    Fitting x{"inclined", {"--height", "5", "--x", "-12", "--y", "-5", "--angle", "20"}, base};
+    x.layout.x_mm = -12, x.layout.y_mm = -5, x.layout.angle_deg = 20;
+    f.push_back(x);
+  }
+  {
+    Fitting x{"circular", {"--height", "5", "--circle", "0,0,20", "--self-centred"}, base};
+    x.layout.circle = "0,0,20", x.layout.self_centred = true;
+    f.push_back(x);
+  }
+  {
+    Fitting x{"mirrored", {"--height", "5", "--x", "-15", "--mirror"}, base};
+    x.layout.x_mm = -15, x.layout.mirror = true;
+    f.push_back(x);
+  }
+  {
+    Fitting x{"sheared", {"--height", "5", "--x", "-15", "--italic", "15", "--width-factor", "0.8"}, base};
+    x.layout.x_mm = -15, x.layout.italic_deg = 15, x.layout.width_factor = 0.8;
+    f.push_back(x);
+  }
+  return f;
+}
+
+const char* kText = "R2-D9 ok";
+
+TEST(GcodeCli, DepressionProgramsPassRs274AndFollowTheStrokes) {
+  for (const Fitting& fit : fittings())
+    for (const char* dialect : {"linuxcnc", "fanuc", "plain"}) {
+      SCOPED_TRACE(fit.name + " " + dialect);
+      const std::string file = out_path(std::string("dep_") + fit.name + "_" + dialect + ".ngc");
+      std::vector<std::string> args = {"gcode", kText, "--mode", "depression", "--tool-diameter", "0.4",
+                                       "--depth", "0.2", "--depth-per-pass", "0.1", "--dialect", dialect,
+                                       "-o", file};
+      args.insert(args.end(), fit.args.begin(), fit.args.end());
+      const CliResult r = run_cli(args);
+      ASSERT_EQ(r.code, 0) << r.err;
+      const Figure fig = cli::build_figure(kText, fit.layout).figure;
+      const Rs274Run run = run_rs274(slurp(file), std::string("cli_dep_") + fit.name + "_" + dialect);
+      ASSERT_EQ(run.exit_code, 0) << run.file << ":\n" << run.errors;
+      CutSettings s;
+      s.depth_mm = 0.2;
+      const DepressionCheck c = check_depression(fig, run, s, 0.0001);
+      EXPECT_GT(c.arcs, 10u);
+    }
+}
+
+TEST(GcodeCli, InchProgram) {
+  const std::string file = out_path("dep_inch.ngc");
+  const CliResult r = run_cli({"gcode", kText, "--height", "5", "--x", "-15", "--italic", "10", "--depth", "0.254",
+                               "--units", "inch", "--dialect", "fanuc", "-o", file});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string program = slurp(file);
+  EXPECT_NE(program.find("G20"), std::string::npos);
+  EXPECT_NE(program.find("Z-0.01 "), std::string::npos);  // 0.254 mm
+  cli::LayoutArgs l;
+  l.height_mm = 5, l.x_mm = -15, l.italic_deg = 10;
+  const Rs274Run run = run_rs274(program, "cli_dep_inch");
+  ASSERT_EQ(run.exit_code, 0) << run.errors;
+  CutSettings s;
+  s.depth_mm = 0.254;
+  check_depression(cli::build_figure(kText, l).figure, run, s, 0.0013);
+}
+
+TEST(GcodeCli, ProtrusionProgramsPassRs274WithoutGouging) {
+  const std::vector<Fitting> all = fittings();
+  const char* dialects[] = {"linuxcnc", "fanuc", "plain"};
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    const Fitting& fit = all[k];
+    const char* dialect = dialects[k % 3];
+    SCOPED_TRACE(fit.name + " " + dialect);
+    const std::string file = out_path(std::string("prot_") + fit.name + ".ngc");
+    const std::string preview = out_path(std::string("prot_") + fit.name + ".svg");
+    std::vector<std::string> args = {"gcode", "OK 42", "--mode", "protrusion", "--tool-diameter", "0.6",
+                                     "--depth", "0.3", "--dialect", dialect, "-o", file, "--preview", preview};
+    args.insert(args.end(), fit.args.begin(), fit.args.end());
+    const CliResult r = run_cli(args);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("pocket loops"), std::string::npos);
+    EXPECT_TRUE(fs::exists(preview));
+    const Figure fig = cli::build_figure("OK 42", fit.layout).figure;
+    CutSettings s;
+    s.tool_diameter_mm = 0.6;
+    s.depth_mm = 0.3;
+    const ProtrusionResult res = protrusion_toolpath(fig, s, {});
+    const Rs274Run run = run_rs274(slurp(file), std::string("cli_prot_") + fit.name);
+    ASSERT_EQ(run.exit_code, 0) << run.file << ":\n" << run.errors;
+    const ProtrusionCheck c = check_protrusion(fig, run, s, res);
+    EXPECT_GE(c.closest_to_letters_mm, 0.3 - kClosenessTolMm);
+    EXPECT_EQ(c.wider_than_tool, 0);
+  }
+}
+
+// A worn tool measured from its shadow: the pocket is offset by the measured radius, so the
+// tool centre keeps exactly that distance from the letters, which keep their designed width.
+TEST(GcodeCli, ToolImageReplacesTheNominalRadius) {
+  Render rr;
+  rr.size = 240;
+  rr.blur_px = 1.0;
+  rr.noise = 0.02;
+  const std::string image = write_pgm(disk(rr, Point(120.3, 119.6), 92), "worn_cli");  // 0.92 mm at 5 µm
+  const std::string file = out_path("prot_worn.ngc");
+  const CliResult r = run_cli({"gcode", "IO", "--height", "5", "--mode", "protrusion", "--tool-diameter", "1.0",
+                               "--depth", "0.2", "--tool-image", image, "--pixel-size", "5", "-o", file});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NEAR(number_after(r.out, "measured diameter "), 0.92, 0.002) << r.out;
+  cli::LayoutArgs l;
+  l.height_mm = 5;
+  const Figure fig = cli::build_figure("IO", l).figure;
+  CutSettings s;
+  s.tool_diameter_mm = 0.92;
+  s.depth_mm = 0.2;
+  ProtrusionSettings ps;
+  ps.stroke_width_mm = 1.0;  // the nominal tool's
+  const ProtrusionResult res = protrusion_toolpath(fig, s, ps);
+  const Rs274Run run = run_rs274(slurp(file), "cli_prot_worn");
+  ASSERT_EQ(run.exit_code, 0) << run.errors;
+  const ProtrusionCheck c = check_protrusion(fig, run, s, res);
+  EXPECT_GE(c.closest_to_letters_mm, 0.46 - 0.002);
+  EXPECT_LT(c.closest_to_letters_mm, 0.46 + 0.01);  // not the nominal 0.5
+  EXPECT_EQ(c.wider_than_tool, 0);
+}
+
+TEST(GcodeCli, ToolMeasureReportsDiameterAndWear) {
+  Render rr;
+  rr.size = 240;
+  rr.blur_px = 1.0;
+  const std::string image = write_png(disk(rr, Point(120.3, 119.6), 92), "worn_measure");
+  const CliResult r = run_cli({"tool-measure", image, "--pixel-size", "5", "--nominal-diameter", "1"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NEAR(number_after(r.out, "diameter "), 0.92, 0.002) << r.out;
+  EXPECT_NEAR(number_after(r.out, "radius "), 0.46, 0.001) << r.out;
+  EXPECT_NEAR(number_after(r.out, "mm: radius "), -0.04, 0.001) << r.out;
+  const CliResult bad = run_cli({"tool-measure", "/nonexistent.png", "--pixel-size", "5"});
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.err.find("marker: /nonexistent.png: cannot open"), std::string::npos) << bad.err;
+}
+
+TEST(GcodeCli, BadInputIsOneLineAndNoFile) {
+  const std::string file = out_path("never.ngc");
+  for (std::vector<std::string> args :
+       {std::vector<std::string>{"gcode", "A", "--mode", "emboss", "-o", file},
+        {"gcode", "A", "--dialect", "heidenhain", "-o", file},
+        {"gcode", "A", "--mode", "protrusion", "--cutter-comp", "--dialect", "plain", "-o", file},
+        {"gcode", "A", "--depth", "-1", "-o", file},
+        {"gcode", "A", "--mode", "protrusion", "--stepover", "5", "-o", file},
+        {"gcode", "A", "--header", "M30%", "-o", file},
+        {"gcode", "A", "--tool-image", "x.pgm", "-o", file},
+        {"gcode", "   ", "-o", file}}) {
+    const CliResult r = run_cli(args);
+    EXPECT_EQ(r.code, 1) << args[2];
+    EXPECT_EQ(r.err.rfind("marker: ", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(file));
+  }
+}
+
+}  // namespace
+}  // namespace mark::test

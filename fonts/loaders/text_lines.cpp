@@ -1,0 +1,83 @@
+#include "fonts/loaders/text_lines.hpp"
+
+#include <cstdio>
+
+#include "fonts/error.hpp"
+#include "fonts/utf8.hpp"
+
+namespace mark::loaders {
+namespace {
+
+// The line starting at `pos` and where the one after it starts.
+std::string_view line_at(std::string_view text, std::size_t pos, std::size_t& next_pos) {
+  std::size_t end = text.find('\n', pos);
+  if (end == std::string_view::npos) {
+    end = text.size();
+    next_pos = end;
+  } else {
+    next_pos = end + 1;
+  }
+  std::string_view line = text.substr(pos, end - pos);
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  return line;
+}
+
+}  // namespace
+
+bool LineReader::next(std::string_view& line) {
+  if (pos_ >= text_.size()) return false;
+  line = line_at(text_, pos_, pos_);
+  ++line_;
+  return true;
+}
+
+bool LineReader::peek(std::string_view& line) const {
+  if (pos_ >= text_.size()) return false;
+  std::size_t ignored;
+  line = line_at(text_, pos_, ignored);
+  return true;
+}
+
+std::string_view trim(std::string_view s) {
+  const auto space = [](char c) { return c == ' ' || c == '\t'; };
+  while (!s.empty() && space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+bool is_blank(std::string_view s) { return trim(s).empty(); }
+
+void check_text_line(std::string_view line, TextEncoding encoding, const std::string& source,
+                     std::size_t line_number) {
+  bool high = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const auto b = static_cast<unsigned char>(line[i]);
+    if (b < 0x20 && b != '\t') {
+      char msg[64];
+      std::snprintf(msg, sizeof msg, "binary data: control byte 0x%02X at column %zu", b, i + 1);
+      throw FontFileError(source, line_number, msg);
+    }
+    high |= b >= 0x80;
+  }
+  if (high && encoding == TextEncoding::utf8) {
+    try {
+      decode_utf8(line, "text");
+    } catch (const InputError& e) {
+      throw FontFileError(source, line_number, e.what());  // "text: invalid UTF-8 at byte N"
+    }
+  }
+}
+
+std::string quote(std::string_view text) {
+  std::string s = "'";
+  if (text.size() > 40) {
+    std::size_t cut = 37;  // not inside a UTF-8 sequence
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    s.append(text.substr(0, cut)).append("...");
+  } else {
+    s.append(text);
+  }
+  return s + "'";
+}
+
+}  // namespace mark::loaders

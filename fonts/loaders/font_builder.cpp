@@ -73,6 +73,7 @@ StrokeFont build_font(const std::string& source, FontMetrics metrics, std::vecto
   const double tolerance = kRelativeJoinTolerance * size;
 
   StrokeFont font(std::filesystem::path(source).stem().string(), source, metrics);
+  StrokeAssembler assembler(tolerance);
   std::unordered_map<char32_t, Box> kept_bounds;
   kept_bounds.reserve(glyphs.size());
   for (std::size_t i = 0; i < glyphs.size(); ++i) {
@@ -83,7 +84,7 @@ StrokeFont build_font(const std::string& source, FontMetrics metrics, std::vecto
     if (format.advance_after_right_edge)
       glyph.advance = (glyph_bounds[i].empty() ? 0.0 : glyph_bounds[i].max.x()) +
                       *format.advance_after_right_edge;
-    glyph.elements = assemble_strokes(raw, tolerance);
+    glyph.elements = assembler.assemble(raw);
     for (const Element& e : glyph.elements)
       if (!element_is_finite(e))
         throw FontFileError(source, raw.line,

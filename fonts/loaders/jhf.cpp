@@ -4,6 +4,7 @@
 // (the bearing pair and every pen-up included), then the pairs, two characters each, a coordinate
 // being its character minus 'R'. The first pair holds the left and right bearings; " R" lifts the
 // pen. y grows downwards and the roman fonts stand on y = +9. Record i is the character U+0020+i.
+// Data terms: see fonts/HERSHEY-ACKNOWLEDGEMENT.txt, which must ship with converted Hershey data.
 // The USENET distribution hard-wraps long records; continuation lines are joined until the pair
 // count is satisfied.
 #include <string>

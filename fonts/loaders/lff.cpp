@@ -110,24 +110,36 @@ class LffParser {
     g.references.push_back({*target, g.raw.piece_ends.size(), n});
   }
 
-  // A vertex "x,y" or "x,y,A<bulge>"; false (with a warning) when it is neither.
+  // A vertex "x,y" or "x,y,A<bulge>" (spaces allowed around the parts); false, with a warning,
+  // when it is neither. Read with a cursor: unicode.lff has 160 000 of them.
   bool read_vertex(std::string_view text, std::size_t n, Point& p, double& bulge) {
-    std::string_view fields[3];
-    std::size_t count = 0;
-    loaders::for_each_field(text, ',', [&](std::string_view f) {
-      if (count < 3) fields[count] = loaders::trim(f);
-      ++count;
-    });
-    bool ok = count == 2 || (count == 3 && !fields[2].empty() && fields[2].front() == 'A');
+    std::size_t i = 0;
+    const auto skip_spaces = [&] {
+      while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    };
+    const auto take = [&](char c) {
+      skip_spaces();
+      if (i >= text.size() || text[i] != c) return false;
+      ++i;
+      skip_spaces();
+      return true;
+    };
+    const auto number = [&](double& value) {
+      std::size_t used = 0;
+      const loaders::NumberStatus s = loaders::scan_number(text.substr(i), used, value);
+      if (s == loaders::NumberStatus::malformed) return false;
+      if (s != loaders::NumberStatus::ok)
+        fail(n, "number " + quote(text.substr(i, used)) + " in vertex " + quote(text) + " " +
+                    loaders::describe(s));
+      i += used;
+      return true;
+    };
     double x = 0, y = 0, b = 0;
-    for (std::size_t i = 0; ok && i < count; ++i) {
-      const std::string_view token = i == 2 ? fields[2].substr(1) : fields[i];
-      const loaders::NumberStatus s = loaders::parse_number(token, i == 0 ? x : i == 1 ? y : b);
-      if (s == loaders::NumberStatus::malformed) ok = false;
-      else if (s != loaders::NumberStatus::ok)
-        fail(n, "number " + quote(token) + " in vertex " + quote(text) + " " + loaders::describe(s));
-    }
-    if (!ok) {
+    bool ok = number(x) && take(',') && number(y);
+    skip_spaces();
+    if (ok && i < text.size()) ok = take(',') && take('A') && number(b);
+    skip_spaces();
+    if (!ok || i != text.size()) {
       loaders::warn(warnings_, source_, n, "skipped malformed vertex " + quote(text));
       return false;
     }

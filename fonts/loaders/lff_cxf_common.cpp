@@ -112,8 +112,7 @@ FontMetrics header_metrics(const LffCxfHeader& header) {
   return m;
 }
 
-void OrphanLines::flush(Warnings* warnings, const std::string& source) {
-  if (count_ == 0) return;
+void OrphanLines::report(Warnings* warnings, const std::string& source) {
   warn(warnings, source, first_,
        "ignored " + std::to_string(count_) + (count_ == 1 ? " line" : " lines") +
            " outside any glyph (no '[XXXX]' header above since the last blank line)");

@@ -49,9 +49,13 @@ class OrphanLines {
   void add(std::size_t line) {
     if (count_++ == 0) first_ = line;
   }
-  void flush(Warnings* warnings, const std::string& source);
+  // Reports the block that just ended, if any.
+  void flush(Warnings* warnings, const std::string& source) {
+    if (count_ != 0) report(warnings, source);
+  }
 
  private:
+  void report(Warnings* warnings, const std::string& source);
   std::size_t first_ = 0;
   std::size_t count_ = 0;
 };

@@ -14,7 +14,11 @@ inline constexpr double kMaxFontValue = 1e6;
 
 enum class NumberStatus { ok, malformed, not_finite, out_of_range };
 
-// The whole of `token` as a decimal number: "3", "-.41", "3.", "+2", "1e-3". No surrounding spaces.
+// The decimal number at the start of `text` ("3", "-.41", "3.", "+2", "1e-3", also "nan" and
+// "inf", which are then reported as not finite); `used` is how many characters it took. The
+// status is `malformed` when `text` does not start with a number.
+NumberStatus scan_number(std::string_view text, std::size_t& used, double& value);
+// The whole of `token` as a decimal number. No surrounding spaces.
 NumberStatus parse_number(std::string_view token, double& value);
 // What is wrong, for messages: "is not a number", "is not finite", "is out of range".
 const char* describe(NumberStatus status);

@@ -14,14 +14,20 @@ void reverse_run(std::vector<Element>::iterator first, std::vector<Element>::ite
 }  // namespace
 
 std::vector<Element> assemble_strokes(const RawGlyph& glyph, double tolerance) {
+  return StrokeAssembler(tolerance).assemble(glyph);
+}
+
+std::vector<Element> StrokeAssembler::assemble(const RawGlyph& glyph) {
+  const double tolerance = tolerance_;
   const double tol2 = tolerance * tolerance;
   const auto near = [tol2](const Point& a, const Point& b) { return (a - b).squaredNorm() <= tol2; };
 
   // All strokes back to back; stroke k is lit[stroke_begin[k] .. stroke_begin[k+1]). Only the
   // last stroke ever changes, so it is always the tail of `lit`.
-  std::vector<Element> lit;
-  lit.reserve(glyph.elements.size());
-  std::vector<std::size_t> stroke_begin;
+  std::vector<Element>& lit = lit_;
+  lit.clear();
+  std::vector<std::size_t>& stroke_begin = stroke_begin_;
+  stroke_begin.clear();
   std::size_t begin = 0;
   for (std::size_t end : glyph.piece_ends) {
     const std::size_t piece_begin = lit.size();

@@ -15,4 +15,16 @@ namespace mark::loaders {
 // longer than `tolerance` (repeated points) are dropped.
 std::vector<Element> assemble_strokes(const RawGlyph& glyph, double tolerance);
 
+// The same, keeping its working buffers from one glyph to the next (a font has thousands).
+class StrokeAssembler {
+ public:
+  explicit StrokeAssembler(double tolerance) : tolerance_(tolerance) {}
+  std::vector<Element> assemble(const RawGlyph& glyph);
+
+ private:
+  double tolerance_;
+  std::vector<Element> lit_;
+  std::vector<std::size_t> stroke_begin_;
+};
+
 }  // namespace mark::loaders

@@ -24,8 +24,14 @@ class LineReader {
   std::size_t line_ = 0;
 };
 
-std::string_view trim(std::string_view s);
-bool is_blank(std::string_view s);
+// Without spaces and tabs at either end. Inline: the parsers call it for every number.
+inline std::string_view trim(std::string_view s) {
+  std::size_t b = 0, e = s.size();
+  while (b < e && (s[b] == ' ' || s[b] == '\t')) ++b;
+  while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t')) --e;
+  return s.substr(b, e - b);
+}
+inline bool is_blank(std::string_view s) { return trim(s).empty(); }
 
 // How the bytes of a text font file are to be read.
 enum class TextEncoding { utf8, latin1 };
@@ -35,19 +41,18 @@ enum class TextEncoding { utf8, latin1 };
 void check_text_line(std::string_view line, TextEncoding encoding, const std::string& source,
                      std::size_t line_number);
 
-// Calls f(field) for each part of `s` between separators (empty parts included).
+// Calls f(field) for each part of `s` between separators (empty parts included). Fields are
+// short (a number, a vertex), so a plain loop beats a memchr call per field.
 template <class F>
 void for_each_field(std::string_view s, char separator, F&& f) {
   std::size_t start = 0;
-  while (true) {
-    const std::size_t end = s.find(separator, start);
-    if (end == std::string_view::npos) {
-      f(s.substr(start));
-      return;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == separator) {
+      f(s.substr(start, i - start));
+      start = i + 1;
     }
-    f(s.substr(start, end - start));
-    start = end + 1;
   }
+  f(s.substr(start));
 }
 
 // `text` quoted for a message, shortened to at most 40 bytes.

@@ -9,7 +9,10 @@ namespace mark::loaders {
 
 class LineReader {
  public:
-  explicit LineReader(std::string_view text) : text_(text) {}
+  // A UTF-8 byte-order mark at the start of the text is skipped (editors on Windows add one).
+  explicit LineReader(std::string_view text) : text_(text) {
+    if (text_.starts_with("\xEF\xBB\xBF")) pos_ = 3;
+  }
 
   // The next line without its '\n' (and without a '\r' before it); false at the end of the text.
   bool next(std::string_view& line);

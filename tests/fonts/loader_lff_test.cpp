@@ -194,6 +194,13 @@ TEST(LoaderLff, HeaderValuesAndSpacing) {
   EXPECT_EQ(f.metrics().cap_height, 9);  // no H or I: the ascender
 }
 
+TEST(LoaderLff, ByteOrderMarkIsSkipped) {
+  Warnings w;
+  const StrokeFont f = parse_lff("\xEF\xBB\xBF# LetterSpacing: 1\n\n[0041] A\n0,0;1,1\n", "bom.lff", &w);
+  EXPECT_TRUE(w.empty());
+  EXPECT_EQ(f.glyph(U'A').advance, 2);
+}
+
 TEST(LoaderLff, ReferencesResolveForwardAndNested) {
   const StrokeFont f = parse_lff(kHeader +
                                      "[0043] C\nC0042\n2,0;2,1\n\n"

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
-#include <unordered_map>
 #include <variant>
 
 #include "fonts/error.hpp"
@@ -36,27 +35,37 @@ bool element_is_finite(const Element& e) {
       e.geometry());
 }
 
-// The top of the drawing of `cp`, if the font has that glyph and it rises above the baseline.
-std::optional<double> top_of(const std::unordered_map<char32_t, Box>& bounds, char32_t cp) {
-  const auto it = bounds.find(cp);
-  if (it == bounds.end() || it->second.empty() || it->second.max.y() <= 0) return std::nullopt;
-  return it->second.max.y();
-}
+// What the metrics are measured from: the lit drawing of all kept glyphs, and of the few that
+// define heights (stroke assembly does not move the drawing, so the raw bounds are the glyphs').
+class MetricSample {
+ public:
+  void add(char32_t cp, const Box& b) {
+    all_.add(b);
+    if (cp == U'H') h_ = b;
+    if (cp == U'I') i_ = b;
+    if (cp == U'x') x_ = b;
+  }
 
-// `bounds` holds the lit drawing of every glyph in the font (stroke assembly does not move it).
-void measure_metrics(const std::unordered_map<char32_t, Box>& bounds, FontMetrics& m,
-                     double nominal_cap_height) {
-  Box all;
-  for (const auto& [cp, b] : bounds) all.add(b);
-  m.ascender = all.empty() ? 0.0 : std::max(0.0, all.max.y());
-  m.descender = all.empty() ? 0.0 : std::min(0.0, all.min.y());
-  std::optional<double> cap = top_of(bounds, U'H');
-  if (!cap) cap = top_of(bounds, U'I');
-  m.cap_height = cap ? *cap : (m.ascender > 0 ? m.ascender : nominal_cap_height);
-  const std::optional<double> x = top_of(bounds, U'x');
-  m.x_height = x ? *x : m.cap_height;
-  m.standard_height = m.cap_height;
-}
+  void measure(FontMetrics& m, double nominal_cap_height) const {
+    m.ascender = all_.empty() ? 0.0 : std::max(0.0, all_.max.y());
+    m.descender = all_.empty() ? 0.0 : std::min(0.0, all_.min.y());
+    std::optional<double> cap = top(h_);
+    if (!cap) cap = top(i_);
+    m.cap_height = cap ? *cap : (m.ascender > 0 ? m.ascender : nominal_cap_height);
+    const std::optional<double> x = top(x_);
+    m.x_height = x ? *x : m.cap_height;
+    m.standard_height = m.cap_height;
+  }
+
+ private:
+  // The top of a glyph's drawing, if it rises above the baseline.
+  static std::optional<double> top(const Box& b) {
+    if (b.empty() || b.max.y() <= 0) return std::nullopt;
+    return b.max.y();
+  }
+
+  Box all_, h_, i_, x_;
+};
 
 }  // namespace
 
@@ -74,8 +83,7 @@ StrokeFont build_font(const std::string& source, FontMetrics metrics, std::vecto
 
   StrokeFont font(std::filesystem::path(source).stem().string(), source, metrics);
   StrokeAssembler assembler(tolerance);
-  std::unordered_map<char32_t, Box> kept_bounds;
-  kept_bounds.reserve(glyphs.size());
+  MetricSample sample;
   for (std::size_t i = 0; i < glyphs.size(); ++i) {
     RawGlyph& raw = glyphs[i];
     Glyph glyph;
@@ -90,12 +98,12 @@ StrokeFont build_font(const std::string& source, FontMetrics metrics, std::vecto
         throw FontFileError(source, raw.line,
                             "glyph " + describe_code_point(raw.code_point) + " has non-finite geometry");
     if (glyph.elements.empty() && !format.keep_empty_glyphs) continue;
-    kept_bounds[raw.code_point] = glyph_bounds[i];
+    sample.add(raw.code_point, glyph_bounds[i]);
     font.add(std::move(glyph));
   }
   if (font.size() == 0)
     throw FontFileError(source, std::max<std::size_t>(end_line, 1), "the font has no glyphs");
-  measure_metrics(kept_bounds, font.metrics(), format.nominal_cap_height);
+  sample.measure(font.metrics(), format.nominal_cap_height);
   return font;
 }
 

@@ -29,7 +29,7 @@ double ccw_sweep_deg(double a1, double a2) {
   return d;
 }
 
-struct CxfGlyph {
+struct DeclaredCount {
   std::size_t declared_count = 0;  // old `[c] N` headers state their element count
   bool has_count = false;
 };
@@ -81,7 +81,7 @@ class CxfParser {
   RawGlyph* start_glyph(std::string_view t, std::size_t n, RawGlyph& discarded) {
     const loaders::GlyphHeader h =
         loaders::parse_glyph_header(t, true, source_, n, header_.encoding, warnings_);
-    CxfGlyph info;
+    DeclaredCount info;
     if (h.literal && !h.rest.empty()) {
       const auto count = loaders::parse_field_integer(h.rest);
       if (!count) fail(n, "bad element count " + quote(h.rest) + " after the glyph's character");
@@ -90,7 +90,8 @@ class CxfParser {
     const auto [it, fresh] = index_.try_emplace(h.code_point, glyphs_.size());
     if (!fresh) {
       loaders::warn(warnings_, source_, n,
-                    "duplicate glyph " + describe_code_point(h.code_point) + " ignored (first defined at line " +
+                    "duplicate glyph " + describe_code_point(h.code_point) +
+                        " ignored (first defined at line " +
                         std::to_string(glyphs_[it->second].line) + ")");
       discarded = RawGlyph{};
       discarded.line = n;
@@ -156,7 +157,7 @@ class CxfParser {
   loaders::OrphanLines orphans_;
   std::vector<RawGlyph> glyphs_;
   std::unordered_map<char32_t, std::size_t> index_;
-  CxfGlyph current_info_;
+  DeclaredCount current_info_;  // of the glyph being read
 };
 
 }  // namespace

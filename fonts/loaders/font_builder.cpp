@@ -21,18 +21,17 @@ bool finite(const Point& p) { return std::isfinite(p.x()) && std::isfinite(p.y()
 // Loader input is range-checked, so this never fires; it keeps a geometry bug from ever handing
 // NaN coordinates to a scanner.
 bool element_is_finite(const Element& e) {
-  return std::visit(
-      Overloaded{[](const Line& l) { return finite(l.start) && finite(l.end); },
-                 [](const CircularArc& a) {
-                   return finite(a.center) && std::isfinite(a.radius) &&
-                          std::isfinite(a.start_angle) && std::isfinite(a.sweep);
-                 },
-                 [](const EllipticalArc& a) {
-                   return finite(a.center) && std::isfinite(a.rx) && std::isfinite(a.ry) &&
-                          std::isfinite(a.rotation) && std::isfinite(a.start_param) &&
-                          std::isfinite(a.sweep);
-                 }},
-      e.geometry());
+  return std::visit(Overloaded{[](const Line& l) { return finite(l.start) && finite(l.end); },
+                               [](const CircularArc& a) {
+                                 return finite(a.center) && std::isfinite(a.radius) &&
+                                        std::isfinite(a.start_angle) && std::isfinite(a.sweep);
+                               },
+                               [](const EllipticalArc& a) {
+                                 return finite(a.center) && std::isfinite(a.rx) &&
+                                        std::isfinite(a.ry) && std::isfinite(a.rotation) &&
+                                        std::isfinite(a.start_param) && std::isfinite(a.sweep);
+                               }},
+                    e.geometry());
 }
 
 // What the metrics are measured from: the lit drawing of all kept glyphs, and of the few that
@@ -95,8 +94,9 @@ StrokeFont build_font(const std::string& source, FontMetrics metrics, std::vecto
     glyph.elements = assembler.assemble(raw);
     for (const Element& e : glyph.elements)
       if (!element_is_finite(e))
-        throw FontFileError(source, raw.line,
-                            "glyph " + describe_code_point(raw.code_point) + " has non-finite geometry");
+        throw FontFileError(
+            source, raw.line,
+            "glyph " + describe_code_point(raw.code_point) + " has non-finite geometry");
     if (glyph.elements.empty() && !format.keep_empty_glyphs) continue;
     sample.add(raw.code_point, glyph_bounds[i]);
     font.add(std::move(glyph));

@@ -21,9 +21,9 @@ namespace {
 using loaders::LineReader;
 using loaders::RawGlyph;
 
-constexpr double kBaselineY = 9;       // file y of the baseline (y down)
-constexpr double kCapHeight = 21;      // roman capitals: y −12 … +9
-constexpr double kLineHeight = 32;     // Hershey's usual baseline-to-baseline distance
+constexpr double kBaselineY = 9;    // file y of the baseline (y down)
+constexpr double kCapHeight = 21;   // roman capitals: y −12 … +9
+constexpr double kLineHeight = 32;  // Hershey's usual baseline-to-baseline distance
 constexpr std::size_t kHeaderColumns = 8;
 constexpr char32_t kFirstCodePoint = 0x20;
 constexpr char32_t kLastCodePoint = 0xD7FF;  // records map to consecutive scalar values
@@ -61,9 +61,10 @@ class JhfParser {
     metrics.baseline = kBaselineY;
     metrics.line_height = kLineHeight;
     if (!glyphs.empty()) metrics.word_spacing = glyphs.front().advance;  // the space, U+0020
-    return loaders::build_font(source_, metrics, std::move(glyphs),
-                               {.nominal_cap_height = kCapHeight, .keep_empty_glyphs = true, .advance_after_right_edge = {}},
-                               reader_.line_number());
+    const loaders::FontFormat format{.nominal_cap_height = kCapHeight,
+                                     .keep_empty_glyphs = true,
+                                     .advance_after_right_edge = {}};
+    return loaders::build_font(source_, metrics, std::move(glyphs), format, reader_.line_number());
   }
 
  private:
@@ -77,10 +78,11 @@ class JhfParser {
       fail(record_line, "record header " + loaders::quote(line) +
                             " is shorter than its 8 columns (glyph number, pair count)");
     if (!loaders::parse_field_integer(line.substr(0, 5)))
-      fail(record_line, "bad glyph number " + loaders::quote(line.substr(0, 5)) +
-                            " in columns 1-5");
+      fail(record_line,
+           "bad glyph number " + loaders::quote(line.substr(0, 5)) + " in columns 1-5");
     const std::optional<long> pairs = loaders::parse_field_integer(line.substr(5, 3));
-    if (!pairs) fail(record_line, "bad pair count " + loaders::quote(line.substr(5, 3)) + " in columns 6-8");
+    if (!pairs)
+      fail(record_line, "bad pair count " + loaders::quote(line.substr(5, 3)) + " in columns 6-8");
     if (*pairs < 1) fail(record_line, "pair count 0: a record needs at least its bearing pair");
     const std::size_t needed = 2 * static_cast<std::size_t>(*pairs);
 

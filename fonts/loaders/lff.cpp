@@ -91,7 +91,8 @@ class LffParser {
     if (!fresh) {
       // LibreCAD keeps the first definition.
       loaders::warn(warnings_, source_, n,
-                    "duplicate glyph " + describe_code_point(h.code_point) + " ignored (first defined at line " +
+                    "duplicate glyph " + describe_code_point(h.code_point) +
+                        " ignored (first defined at line " +
                         std::to_string(glyphs_[it->second].raw.line) + ")");
       discarded = LffGlyph{};
       return &discarded;
@@ -104,8 +105,7 @@ class LffParser {
 
   void read_reference(std::string_view t, std::size_t n, LffGlyph& g) {
     const auto target = loaders::parse_hex_code_point(t.substr(1));
-    if (!target)
-      fail(n, "bad glyph reference " + quote(t) + " (expected C and 1-6 hex digits)");
+    if (!target) fail(n, "bad glyph reference " + quote(t) + " (expected C and 1-6 hex digits)");
     g.raw.end_piece();
     g.references.push_back({*target, g.raw.piece_ends.size(), n});
   }
@@ -240,8 +240,8 @@ class LffParser {
       const RawGlyph& target = glyphs_[index_.at(r.target)].raw;
       added += target.elements.size();
       if (total_so_far + added > kMaxExpandedElements)
-        fail(r.line, "glyph references expand to more than " + std::to_string(kMaxExpandedElements) +
-                         " elements");
+        fail(r.line, "glyph references expand to more than " +
+                         std::to_string(kMaxExpandedElements) + " elements");
       out.append_pieces(target);
     }
     copy_own_pieces_until(g.raw.piece_ends.size());

@@ -98,7 +98,8 @@ GlyphHeader parse_glyph_header(std::string_view line, bool allow_literal, const 
   return h;
 }
 
-void warn(Warnings* warnings, const std::string& source, std::size_t line, const std::string& what) {
+void warn(Warnings* warnings, const std::string& source, std::size_t line,
+          const std::string& what) {
   if (warnings) warnings->push_back(source + ":" + std::to_string(line) + ": " + what);
 }
 

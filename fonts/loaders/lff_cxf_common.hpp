@@ -30,8 +30,8 @@ void read_header_line(std::string_view line, LffCxfHeader& header, const std::st
 
 struct GlyphHeader {
   char32_t code_point = 0;
-  bool literal = false;       // `[c]` (old CXF): the character itself between the brackets
-  std::string_view rest;      // after the ']' (the character, or an old CXF element count)
+  bool literal = false;   // `[c]` (old CXF): the character itself between the brackets
+  std::string_view rest;  // after the ']' (the character, or an old CXF element count)
 };
 
 // `[XXXX] c` (1-6 hex digits) and `[#XXXX]`; with `allow_literal` also `[c] N`. A doubled

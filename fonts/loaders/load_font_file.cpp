@@ -46,13 +46,17 @@ StrokeFont load_font_file(const std::string& path, Warnings* warnings) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   using Parser = StrokeFont (*)(std::string_view, const std::string&, Warnings*);
   Parser parse = nullptr;
-  if (ext == ".jhf") parse = parse_jhf;
-  else if (ext == ".lff") parse = parse_lff;
-  else if (ext == ".cxf") parse = parse_cxf;
+  if (ext == ".jhf")
+    parse = parse_jhf;
+  else if (ext == ".lff")
+    parse = parse_lff;
+  else if (ext == ".cxf")
+    parse = parse_cxf;
   else
-    throw InputError("font file '" + path + "' has " +
-                     (ext.empty() ? std::string("no extension") : "an unknown extension '" + ext + "'") +
-                     " (expected .jhf, .lff or .cxf)");
+    throw InputError(
+        "font file '" + path + "' has " +
+        (ext.empty() ? std::string("no extension") : "an unknown extension '" + ext + "'") +
+        " (expected .jhf, .lff or .cxf)");
   const std::string text = read_font_file(path);
   // The parsers name the font after the stem of the source they are given.
   return parse(text, path, warnings);

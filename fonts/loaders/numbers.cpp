@@ -16,8 +16,8 @@ namespace {
 // from_chars'. Returns the characters used, or 0 when the number needs from_chars (exponent,
 // long mantissa) or there is none.
 std::size_t scan_plain_decimal(std::string_view text, double& value) {
-  static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                      1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+  static constexpr double kPow10[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                      1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
   std::size_t i = 0;
   const bool negative = !text.empty() && text[0] == '-';
   if (negative) ++i;
@@ -76,10 +76,14 @@ NumberStatus parse_number(std::string_view token, double& value) {
 
 const char* describe(NumberStatus status) {
   switch (status) {
-    case NumberStatus::ok: return "is fine";
-    case NumberStatus::malformed: return "is not a number";
-    case NumberStatus::not_finite: return "is not finite";
-    case NumberStatus::out_of_range: return "is out of range (|value| > 1e6)";
+    case NumberStatus::ok:
+      return "is fine";
+    case NumberStatus::malformed:
+      return "is not a number";
+    case NumberStatus::not_finite:
+      return "is not finite";
+    case NumberStatus::out_of_range:
+      return "is out of range (|value| > 1e6)";
   }
   return "is not a number";
 }

@@ -20,7 +20,9 @@ std::vector<Element> assemble_strokes(const RawGlyph& glyph, double tolerance) {
 std::vector<Element> StrokeAssembler::assemble(const RawGlyph& glyph) {
   const double tolerance = tolerance_;
   const double tol2 = tolerance * tolerance;
-  const auto near = [tol2](const Point& a, const Point& b) { return (a - b).squaredNorm() <= tol2; };
+  const auto near = [tol2](const Point& a, const Point& b) {
+    return (a - b).squaredNorm() <= tol2;
+  };
 
   // All strokes back to back; stroke k is lit[stroke_begin[k] .. stroke_begin[k+1]). Only the
   // last stroke ever changes, so it is always the tail of `lit`.
@@ -46,9 +48,9 @@ std::vector<Element> StrokeAssembler::assemble(const RawGlyph& glyph) {
     if (near(p0, s1)) continue;  // already in place after the stroke
     if (near(p1, s0)) {          // goes before the stroke
       std::rotate(stroke, piece, lit.end());
-    } else if (near(p1, s1)) {   // appended backwards
+    } else if (near(p1, s1)) {  // appended backwards
       reverse_run(piece, lit.end());
-    } else if (near(p0, s0)) {   // the stroke backwards, then the piece
+    } else if (near(p0, s0)) {  // the stroke backwards, then the piece
       reverse_run(stroke, piece);
     } else {
       stroke_begin.push_back(piece_begin);

@@ -69,13 +69,31 @@ void check_text_line(std::string_view line, TextEncoding encoding, const std::st
 }
 
 std::string quote(std::string_view text) {
+  // Messages are one printable line: control bytes, and every byte of text that is not valid
+  // UTF-8 (a binary file), are written as \xNN.
+  bool utf8 = true;
+  try {
+    decode_utf8(text, "text");
+  } catch (const InputError&) {
+    utf8 = false;
+  }
   std::string s = "'";
-  if (text.size() > 40) {
-    std::size_t cut = 37;  // not inside a UTF-8 sequence
-    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
-    s.append(text.substr(0, cut)).append("...");
-  } else {
-    s.append(text);
+  std::size_t shown = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto b = static_cast<unsigned char>(text[i]);
+    // Shorten to about 40 bytes, not inside a UTF-8 sequence.
+    if (shown >= 37 && (b & 0xC0) != 0x80 && text.size() > 40) {
+      s += "...";
+      break;
+    }
+    if (b < 0x20 || b == 0x7F || (b >= 0x80 && !utf8)) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02X", b);
+      s += hex;
+    } else {
+      s += static_cast<char>(b);
+    }
+    ++shown;
   }
   return s + "'";
 }

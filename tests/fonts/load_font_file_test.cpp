@@ -15,8 +15,9 @@ namespace {
 // A scratch directory removed at the end of the test.
 struct TempDir {
   fs::path path = fs::temp_directory_path() /
-                  ("marker_load_font_file_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                   "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+                  ("marker_load_font_file_" +
+                   std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
   TempDir() { fs::create_directories(path); }
   ~TempDir() { fs::remove_all(path); }
 };

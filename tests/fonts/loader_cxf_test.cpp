@@ -82,7 +82,8 @@ TEST(LoaderCxf, ArcWrappingThroughZeroDegrees) {
 }
 
 TEST(LoaderCxf, ClockwiseArc) {
-  // Þ: "AR 2,4.5,1.5,90,270" — clockwise from 90° to 270°: the bowl on the right, through (3.5,4.5).
+  // Þ: "AR 2,4.5,1.5,90,270" — clockwise from 90° to 270°: the bowl on the right, through
+  // (3.5,4.5).
   const Glyph& thorn = sample().glyph(U'\u00DE');
   ASSERT_EQ(thorn.elements.size(), 5u);
   EXPECT_EQ(test::count_travel(thorn), 0u);  // the pieces join into one path
@@ -131,14 +132,15 @@ TEST(LoaderCxf, OldStyleLiteralHeaders) {
       "[]] 1\nL 0,0,1,0\n\n[[] 1\nL 0,0,1,0\n\n[#] 1\nL 0,0,1,0\n\n[A] 3\nL 0,0,1,0\n"
       "[B]\nL 0,0,1,0\n[0043] C\nL 0,0,1,0\n",
       "old.cxf", &w);
-  for (char32_t cp : {U']', U'[', U'#', U'A', U'B', U'C'}) EXPECT_NE(f.find(cp), nullptr) << char(cp);
+  for (char32_t cp : {U']', U'[', U'#', U'A', U'B', U'C'})
+    EXPECT_NE(f.find(cp), nullptr) << char(cp);
   ASSERT_EQ(w.size(), 1u);  // a body may end at the next header, without a blank line
   EXPECT_EQ(w[0], "old.cxf:10: glyph 'A' (U+0041) declares 3 elements but has 1");
 }
 
 TEST(LoaderCxf, Latin1Encoding) {
-  const StrokeFont f =
-      parse_cxf("# Encoding: ISO-8859-1\n[\xe9] 1\nL 0,0,1,1\n\n[00FC] \xfc\nL 0,0,2,2\n", "l1.cxf");
+  const StrokeFont f = parse_cxf(
+      "# Encoding: ISO-8859-1\n[\xe9] 1\nL 0,0,1,1\n\n[00FC] \xfc\nL 0,0,2,2\n", "l1.cxf");
   EXPECT_NE(f.find(U'\u00E9'), nullptr);
   EXPECT_NE(f.find(U'\u00FC'), nullptr);
 }

@@ -37,10 +37,10 @@ TEST(LoaderJhf, RomanSimplexMetrics) {
   const FontMetrics& m = f.metrics();
   EXPECT_EQ(m.cap_height, 21);
   EXPECT_EQ(m.standard_height, 21);
-  EXPECT_EQ(m.x_height, 14);      // 'x' top at file y = −5
-  EXPECT_EQ(m.baseline, 9);       // file y of the baseline
-  EXPECT_EQ(m.ascender, 25);      // brackets reach file y = −16
-  EXPECT_EQ(m.descender, -7);     // descenders reach file y = +16
+  EXPECT_EQ(m.x_height, 14);   // 'x' top at file y = −5
+  EXPECT_EQ(m.baseline, 9);    // file y of the baseline
+  EXPECT_EQ(m.ascender, 25);   // brackets reach file y = −16
+  EXPECT_EQ(m.descender, -7);  // descenders reach file y = +16
   EXPECT_EQ(m.line_height, 32);
   EXPECT_EQ(m.word_spacing, 16);  // the space's bearings −8 .. +8
   EXPECT_EQ(m.letter_spacing, 0);
@@ -55,7 +55,8 @@ TEST(LoaderJhf, CapitalHSpansBaselineToCapHeight) {
   expect_point(b.max, 18, 21);
   ASSERT_EQ(h.elements.size(), 5u);
   const bool laser[] = {true, false, true, false, true};
-  const double pts[5][4] = {{4, 21, 4, 0}, {4, 0, 18, 21}, {18, 21, 18, 0}, {18, 0, 4, 11}, {4, 11, 18, 11}};
+  const double pts[5][4] = {
+      {4, 21, 4, 0}, {4, 0, 18, 21}, {18, 21, 18, 0}, {18, 0, 4, 11}, {4, 11, 18, 11}};
   for (int i = 0; i < 5; ++i) {
     SCOPED_TRACE(i);
     EXPECT_EQ(h.elements[i].laser(), laser[i]);
@@ -174,7 +175,8 @@ TEST(LoaderJhf, WrappedFixtureMatchesDebianFile) {
   for (const auto& [cp, g] : wrapped.glyphs()) {
     const Glyph& d = full.glyph(cp);
     ASSERT_EQ(g.elements.size(), d.elements.size());
-    for (std::size_t i = 0; i < g.elements.size(); ++i) EXPECT_EQ(g.elements[i].end(), d.elements[i].end());
+    for (std::size_t i = 0; i < g.elements.size(); ++i)
+      EXPECT_EQ(g.elements[i].end(), d.elements[i].end());
   }
 }
 
@@ -215,12 +217,16 @@ TEST(LoaderJhf, MalformedRecordsNameTheirLine) {
   fails(kGood + "    1  -MWRFRT\n", 2, "bad pair count");
   fails(kGood + "    1  0MW\n", 2, "pair count 0");
   fails(kGood + "  501\n", 2, "shorter than its 8 columns");
-  fails(kGood + record(4, "MWRFRT"), 2, "truncated record: pair count 4 needs 8 coordinate characters, found 6");
-  fails(record(4, "MWRFRT") + kGood, 1, "truncated record");  // next line is a record, not a continuation
-  fails(kGood + record(4, "MWRF") + "\n" + kGood, 2, "truncated record");  // a blank line never continues
+  fails(kGood + record(4, "MWRFRT"), 2,
+        "truncated record: pair count 4 needs 8 coordinate characters, found 6");
+  fails(record(4, "MWRFRT") + kGood, 1,
+        "truncated record");  // next line is a record, not a continuation
+  fails(kGood + record(4, "MWRF") + "\n" + kGood, 2,
+        "truncated record");  // a blank line never continues
   fails(kGood + kGood + record(2, "MWRFRT"), 3, "longer than its pair count 2");
   fails(record(3, "MWRFRT RQ"), 1, "longer than its pair count");
-  fails(kGood + record(3, "MWRF") + "RTQQ\n", 3, "longer than its pair count");  // wrapped, too long
+  fails(kGood + record(3, "MWRF") + "RTQQ\n", 3,
+        "longer than its pair count");  // wrapped, too long
   fails(kGood + record(3, "MWRF Q"), 2, "pair 3 ' Q' is neither a point nor the pen-up");
   fails(kGood + record(3, "MWRF\tT"), 2, "pair 3");
   fails(kGood + record(3, "MWRF\xc3\xa9"), 2, "pair 3");
@@ -229,7 +235,11 @@ TEST(LoaderJhf, MalformedRecordsNameTheirLine) {
   fails(kGood + "\n" + kGood, 2, "blank line between glyph records");
   fails("", 1, "no glyphs");
   fails("\n\n", 2, "no glyphs");
-  fails(std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10) + "\n", 1, "bad glyph number");
+  fails(std::string("\x7f"
+                    "ELF\x02\x01\x01\0\0\0",
+                    10) +
+            "\n",
+        1, "bad glyph number");
   fails(std::string("    1  3MW\0FRT\n", 15), 1, "pair 2");
 }
 

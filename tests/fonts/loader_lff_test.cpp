@@ -41,7 +41,7 @@ TEST(LoaderLff, StandardMetrics) {
   EXPECT_EQ(m.baseline, 0);
   EXPECT_DOUBLE_EQ(m.line_height, 9 * 1.6);  // LibreCAD: 9 × 1.6 × LineSpacingFactor 1
   EXPECT_EQ(m.word_spacing, 6.75);
-  EXPECT_EQ(m.letter_spacing, 0);  // already in every advance
+  EXPECT_EQ(m.letter_spacing, 0);    // already in every advance
   EXPECT_EQ(f.find(U' '), nullptr);  // the layout uses word_spacing
 }
 
@@ -122,11 +122,11 @@ TEST(LoaderLff, ReferenceCopiesTheReferencedGlyph) {
 
 TEST(LoaderLff, AllDebianFontsLoadWithTheirKnownDefects) {
   const std::map<std::string, std::size_t> expected_warnings = {
-      {"unicode", 2},  // two malformed vertices
-      {"kst32b", 5},   // duplicate glyphs (first kept, as in LibreCAD)
-      {"cursive", 1},  // duplicate U+2205
-      {"greek_ol", 1}, // "[[038c]"
-      {"syastro", 1}, {"symap", 1}, {"symath", 1}, {"symeteo", 1}, {"symusic", 1},  // stray block
+      {"unicode", 2},   // two malformed vertices
+      {"kst32b", 5},    // duplicate glyphs (first kept, as in LibreCAD)
+      {"cursive", 1},   // duplicate U+2205
+      {"greek_ol", 1},  // "[[038c]"
+      {"syastro", 1},  {"symap", 1}, {"symath", 1}, {"symeteo", 1}, {"symusic", 1},  // stray block
   };
   std::size_t files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(test::kLibreCadDir)) {
@@ -190,13 +190,14 @@ TEST(LoaderLff, HeaderValuesAndSpacing) {
   EXPECT_EQ(f.glyph(U'A').advance, 2.5);
   EXPECT_EQ(f.metrics().word_spacing, 4);
   EXPECT_DOUBLE_EQ(f.metrics().line_height, 2 * 9 * 1.6);
-  EXPECT_EQ(f.find(U' '), nullptr);  // empty glyphs are dropped, as LibreCAD does
+  EXPECT_EQ(f.find(U' '), nullptr);      // empty glyphs are dropped, as LibreCAD does
   EXPECT_EQ(f.metrics().cap_height, 9);  // no H or I: the ascender
 }
 
 TEST(LoaderLff, ByteOrderMarkIsSkipped) {
   Warnings w;
-  const StrokeFont f = parse_lff("\xEF\xBB\xBF# LetterSpacing: 1\n\n[0041] A\n0,0;1,1\n", "bom.lff", &w);
+  const StrokeFont f =
+      parse_lff("\xEF\xBB\xBF# LetterSpacing: 1\n\n[0041] A\n0,0;1,1\n", "bom.lff", &w);
   EXPECT_TRUE(w.empty());
   EXPECT_EQ(f.glyph(U'A').advance, 2);
 }
@@ -238,7 +239,8 @@ TEST(LoaderLff, ReferenceExpansionIsBounded) {
     parse_lff(text, "bomb.lff");
     ADD_FAILURE() << "no error";
   } catch (const FontFileError& e) {
-    EXPECT_NE(std::string(e.what()).find("expand to more than 2000000 elements"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("expand to more than 2000000 elements"),
+              std::string::npos);
   }
 }
 
@@ -256,7 +258,9 @@ TEST(LoaderLff, SkippedDefectsAreWarnings) {
   EXPECT_EQ(w[3], "w.lff:6: skipped malformed vertex '1,1,A'");
   EXPECT_EQ(w[4], "w.lff:6: skipped malformed vertex '2,2,3,4'");
   EXPECT_EQ(w[5], "w.lff:8: duplicate glyph 'A' (U+0041) ignored (first defined at line 5)");
-  EXPECT_EQ(w[6], "w.lff:11: ignored 2 lines outside any glyph (no '[XXXX]' header above since the last blank line)");
+  EXPECT_EQ(w[6],
+            "w.lff:11: ignored 2 lines outside any glyph (no '[XXXX]' header above since the last "
+            "blank line)");
   const Glyph& a = f.glyph(U'A');
   ASSERT_EQ(a.elements.size(), 1u);  // (0,0)→(5,5), the first definition
   expect_point(a.elements[0].end(), 5, 5);
@@ -285,9 +289,11 @@ TEST(LoaderLff, MalformedFilesNameTheLine) {
   fails(ok + "[#] x\n", 4, "bad glyph header");
   fails(ok + "[0042] B\nCxyz\n", 5, "bad glyph reference 'Cxyz'");
   fails(ok + "[0042] B\nC\n", 5, "bad glyph reference");
-  fails(ok + "[0042] B\nC0099\n", 5, "glyph reference C0099 in 'B' (U+0042): the font has no glyph");
+  fails(ok + "[0042] B\nC0099\n", 5,
+        "glyph reference C0099 in 'B' (U+0042): the font has no glyph");
   fails(ok + "[0042] B\n0,0;1,1\nC0043\n\n[0043] C\nC0042\n", 9, "glyph reference cycle");
-  fails(ok + "[0042] B\nC0042\n", 5, "glyph reference cycle: C0042 in 'B' (U+0042) leads back to 'B' (U+0042)");
+  fails(ok + "[0042] B\nC0042\n", 5,
+        "glyph reference cycle: C0042 in 'B' (U+0042) leads back to 'B' (U+0042)");
   fails(ok + "[0042] B\nnan,0;1,1\n", 5, "number 'nan' in vertex 'nan,0' is not finite");
   fails(ok + "[0042] B\n0,inf;1,1\n", 5, "is not finite");
   fails(ok + "[0042] B\n0,0;1,1,A-inf\n", 5, "is not finite");

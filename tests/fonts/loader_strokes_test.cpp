@@ -21,7 +21,8 @@ RawGlyph pieces(std::initializer_list<std::vector<double>> polylines) {
   return g;
 }
 
-std::vector<Point> path_of(const std::vector<Element>& elements, std::vector<bool>* laser = nullptr) {
+std::vector<Point> path_of(const std::vector<Element>& elements,
+                           std::vector<bool>* laser = nullptr) {
   std::vector<Point> pts;
   if (elements.empty()) return pts;
   pts.push_back(elements.front().start());
@@ -87,7 +88,8 @@ TEST(AssembleStrokes, JoinsWithinTheToleranceOnly) {
 }
 
 TEST(AssembleStrokes, DropsRepeatedPointsAndEmptyPieces) {
-  const auto out = assemble_strokes(pieces({{0, 0, 0, 0, 1, 0, 1, 0}, {3, 3, 3, 3}, {1, 0, 2, 0}}), 1e-9);
+  const auto out =
+      assemble_strokes(pieces({{0, 0, 0, 0, 1, 0, 1, 0}, {3, 3, 3, 3}, {1, 0, 2, 0}}), 1e-9);
   ASSERT_EQ(out.size(), 2u);
   EXPECT_TRUE(out[0].laser() && out[1].laser());
   expect_point(out[1].end(), 2, 0);
@@ -96,8 +98,7 @@ TEST(AssembleStrokes, DropsRepeatedPointsAndEmptyPieces) {
 
 TEST(AssembleStrokes, NoMoveWhenAGrownStrokeMeetsThePreviousOne) {
   // Stroke 1 ends at (0,6); piece 3 is prepended to stroke 2 and now starts there too.
-  const auto out =
-      assemble_strokes(pieces({{0, 0, 0, 6}, {2, 6, 2, 3}, {0, 6, 2, 6}}), 1e-9);
+  const auto out = assemble_strokes(pieces({{0, 0, 0, 6}, {2, 6, 2, 3}, {0, 6, 2, 6}}), 1e-9);
   std::vector<bool> laser;
   path_of(out, &laser);
   EXPECT_EQ(laser, (std::vector<bool>{true, true, true}));
@@ -109,7 +110,8 @@ TEST(AssembleStrokes, ClosedArcsKeepTheirGeometryWhenReversed) {
   g.end_piece();
   g.elements.push_back(Element::arc({1, 0}, 1, 0, std::numbers::pi / 2));  // (2,0) → (1,1)
   g.end_piece();
-  g.elements.push_back(Element::arc({1, 2}, 1, -std::numbers::pi / 2, -std::numbers::pi / 2));  // (1,1) → (0,2)
+  g.elements.push_back(
+      Element::arc({1, 2}, 1, -std::numbers::pi / 2, -std::numbers::pi / 2));  // (1,1) → (0,2)
   g.end_piece();
   const auto out = assemble_strokes(g, 1e-9);
   ASSERT_EQ(out.size(), 3u);

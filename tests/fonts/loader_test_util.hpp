@@ -50,7 +50,8 @@ inline void expect_point(const Point& actual, double x, double y, double tol = 1
 inline void expect_continuous(const Glyph& g, double tol = 1e-9) {
   for (std::size_t i = 1; i < g.elements.size(); ++i)
     EXPECT_LE((g.elements[i].start() - g.elements[i - 1].end()).norm(), tol)
-        << "gap before element " << i << " of U+" << std::hex << static_cast<unsigned>(g.code_point);
+        << "gap before element " << i << " of U+" << std::hex
+        << static_cast<unsigned>(g.code_point);
 }
 
 }  // namespace mark::test

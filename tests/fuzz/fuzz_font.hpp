@@ -17,7 +17,8 @@
 namespace mark::fuzz {
 
 [[noreturn]] inline void broken(const char* what, char32_t cp) {
-  std::fprintf(stderr, "fuzz invariant broken: %s (glyph U+%04X)\n", what, static_cast<unsigned>(cp));
+  std::fprintf(stderr, "fuzz invariant broken: %s (glyph U+%04X)\n", what,
+               static_cast<unsigned>(cp));
   std::abort();
 }
 

@@ -239,8 +239,9 @@ TEST(LoaderJhf, MalformedRecordsNameTheirLine) {
                     "ELF\x02\x01\x01\0\0\0",
                     10) +
             "\n",
-        1, "bad glyph number");
-  fails(std::string("    1  3MW\0FRT\n", 15), 1, "pair 2");
+        1, "bad glyph number '\\x7FELF\\x02' in columns 1-5");  // binary bytes escaped
+  fails(std::string("    1  3MW\0FRT\n", 15), 1, "pair 2 '\\x00F'");
+  fails("    1  3MWRF\xc3T\n", 1, "pair 3 '\\xC3T'");
 }
 
 TEST(LoaderJhf, TooManyRecordsIsAnError) {

@@ -1,6 +1,7 @@
 // Biarc fitting of cubic Béziers (see biarc.hpp for the method and its references).
 #include "fonts/biarc.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -121,17 +122,17 @@ double biarc_error(const CubicBezier& c, const Biarc& b, double limit) {
         const double di = (samples[i] - q).squaredNorm();
         if (di < dk) dk = di, k = i;
       }
-      double lo = std::max(0, k - 1) / double(kCurveSamples);
-      double hi = std::min(kCurveSamples, k + 1) / double(kCurveSamples);
-      const double g = (std::sqrt(5.0) - 1) / 2;
-      for (int it = 0; it < 30; ++it) {
-        const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-        if ((c.point_at(m1) - q).squaredNorm() < (c.point_at(m2) - q).squaredNorm())
-          hi = m2;
-        else
-          lo = m1;
+      // Newton on (B(t) − q)·B'(t) = 0 from the nearest sample; taking the smaller of the two
+      // distances keeps the measure an upper bound even if Newton wanders.
+      double t = static_cast<double>(k) / kCurveSamples;
+      for (int it = 0; it < 4; ++it) {
+        const Point r = c.point_at(t) - q, d1 = c.derivative_at(t);
+        const Point d2 = 6 * ((1 - t) * (c.p2 - 2 * c.p1 + c.p0) + t * (c.p3 - 2 * c.p2 + c.p1));
+        const double slope = d1.squaredNorm() + r.dot(d2);
+        if (!(slope > 0)) break;
+        t = std::clamp(t - r.dot(d1) / slope, 0.0, 1.0);
       }
-      const double dist = std::min(std::sqrt(dk), (c.point_at((lo + hi) / 2) - q).norm());
+      const double dist = std::min(std::sqrt(dk), (c.point_at(t) - q).norm());
       worst = std::max(worst, dist);
       if (worst > limit) return worst;
     }

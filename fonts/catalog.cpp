@@ -23,7 +23,7 @@ std::vector<std::string> font_directories() {
     }
   }
   for (const char* d : {"/usr/share/hershey-fonts", "/usr/share/librecad/fonts",
-                        "/usr/share/qcad/fonts"})
+                        "/usr/share/qcad/fonts", "/usr/share/fonts"})
     dirs.emplace_back(d);
   return dirs;
 }
@@ -33,10 +33,12 @@ std::vector<FontFile> installed_fonts() {
   for (const std::string& dir : font_directories()) {
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) continue;
-    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    // Recursive: /usr/share/fonts keeps TrueType/OpenType files in per-package subdirectories.
+    for (const auto& entry :
+         fs::recursive_directory_iterator(dir, fs::directory_options::skip_permission_denied, ec)) {
       std::string ext = entry.path().extension().string();
       std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-      if (ext == ".jhf" || ext == ".lff" || ext == ".cxf")
+      if (ext == ".jhf" || ext == ".lff" || ext == ".cxf" || ext == ".ttf" || ext == ".otf")
         out.push_back({entry.path().stem().string(), ext.substr(1), entry.path().string()});
     }
   }

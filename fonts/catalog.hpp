@@ -1,6 +1,7 @@
 #pragma once
 // Where fonts come from: the built-in marking font, and the stroke-font files installed on the
-// machine (Debian's hershey-fonts-data, librecad-data, QCAD fonts), opened by name or by path.
+// machine (Debian's hershey-fonts-data, librecad-data, QCAD fonts, TrueType/OpenType under
+// /usr/share/fonts), opened by name or by path.
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,7 +17,7 @@ inline constexpr const char* kBuiltinFontName = "builtin";
 
 struct FontFile {
   std::string name;    // file stem, e.g. "rowmans"
-  std::string format;  // "jhf", "lff", "cxf"
+  std::string format;  // "jhf", "lff", "cxf", "ttf", "otf"
   std::string path;
 };
 

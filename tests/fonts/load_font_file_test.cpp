@@ -67,9 +67,10 @@ TEST(LoadFontFile, UnreadableFilesAreInputErrors) {
   fs::create_directory(folder);
   expect_input_error(folder.string(), "is a directory");
   expect_input_error("/dev/null.jhf", "No such file or directory");
-  const fs::path unknown = dir.path / "font.ttf";
+  const fs::path unknown = dir.path / "font.shx";
   std::ofstream(unknown) << "x";
-  expect_input_error(unknown.string(), "unknown extension '.ttf' (expected .jhf, .lff or .cxf)");
+  expect_input_error(unknown.string(),
+                     "unknown extension '.shx' (expected .jhf, .lff, .cxf, .ttf or .otf)");
   const fs::path bare = dir.path / "font";
   std::ofstream(bare) << "x";
   expect_input_error(bare.string(), "no extension");

@@ -124,7 +124,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadScript{"M5,5 A0,0,1,0,90", "0,0,1,0,90", "preceding M"},
                       // an arc ending 1.7e-6 short of the next arc: a tiny unmarked gap
                       BadScript{"A0,0,1,0,90 A0,0,1,90.0001,180", "0,0,1,90.0001,180",
-                                "join exactly"}));
+                                "join exactly"}),
+    [](const ::testing::TestParamInfo<BadScript>& info) { return "case" + std::to_string(info.index); });
 
 TEST(GlyphScript, RejectsANonPositiveAdvance) {
   EXPECT_THROW(parse_glyph_script(U'X', 0, "M0,0 L1,1"), InputError);

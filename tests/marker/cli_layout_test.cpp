@@ -8,29 +8,15 @@
 #include <string>
 #include <vector>
 
-#include "marker/cli/cli.hpp"
+#include "cli_runner.hpp"
 
 namespace mark {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-Result run(std::vector<std::string> args) {
-  args.insert(args.begin(), "marker");
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  const int code = cli::run(static_cast<int>(argv.size()), argv.data());
-  Result r{code, testing::internal::GetCapturedStdout(), testing::internal::GetCapturedStderr()};
-  return r;
-}
+using Result = test::CliResult;
+const auto run = test::run_cli;
 
 fs::path temp_file(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / "marker_cli_test";

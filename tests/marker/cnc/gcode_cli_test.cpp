@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "cnc_checks.hpp"
-#include "marker/cli/cli.hpp"
+#include "../cli_runner.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cnc/protrusion.hpp"
 #include "tool_render.hpp"
@@ -23,21 +23,6 @@ namespace mark::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CliResult {
-  int code;
-  std::string out, err;
-};
-
-CliResult run_cli(std::vector<std::string> args) {
-  args.insert(args.begin(), "marker");
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  const int code = cli::run(static_cast<int>(argv.size()), argv.data());
-  return {code, testing::internal::GetCapturedStdout(), testing::internal::GetCapturedStderr()};
-}
 
 std::string out_path(const std::string& name) {
   const fs::path dir = fs::path(MARKER_BINARY_DIR) / "cnc_cli";

@@ -15,7 +15,12 @@ constexpr std::array<double, 5> kWeights = {0.2955242247147529, 0.26926671930999
                                             0.2190863625159820, 0.1494513491505806,
                                             0.0666713443086881};
 
-double speed(double rx, double ry, double th) { return std::hypot(rx * std::sin(th), ry * std::cos(th)); }
+// |d/dθ| of the ellipse point. A plain square root: std::hypot's overflow guard costs several
+// times as much and the operands here are millimetres.
+double speed(double rx, double ry, double th) {
+  const double a = rx * std::sin(th), b = ry * std::cos(th);
+  return std::sqrt(a * a + b * b);
+}
 
 double gauss10(double rx, double ry, double a, double b) {
   const double m = (a + b) / 2, h = (b - a) / 2;

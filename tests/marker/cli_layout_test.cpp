@@ -18,12 +18,7 @@ namespace fs = std::filesystem;
 using Result = test::CliResult;
 const auto run = test::run_cli;
 
-fs::path temp_file(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "marker_cli_test";
-  fs::create_directories(dir);
-  fs::remove(dir / name);
-  return dir / name;
-}
+fs::path temp_file(const std::string& name) { return test::fresh_temp_file("marker_cli_test", name); }
 
 TEST(CliLayout, JsonHasGlyphsWithElementsInMillimetres) {
   const Result r = run({"layout", "O1", "--height", "4", "--x", "-5", "--json"});

@@ -2,6 +2,7 @@
 // Runs the `marker` command line in-process and captures what it prints, for the CLI tests.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,14 @@ inline CliResult run_cli(std::vector<std::string> args) {
   testing::internal::CaptureStderr();
   const int code = cli::run(static_cast<int>(argv.size()), argv.data());
   return {code, testing::internal::GetCapturedStdout(), testing::internal::GetCapturedStderr()};
+}
+
+// A path in a per-suite temporary folder, with no file there yet.
+inline std::filesystem::path fresh_temp_file(const std::string& folder, const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / folder;
+  std::filesystem::create_directories(dir);
+  std::filesystem::remove(dir / name);
+  return dir / name;
 }
 
 }  // namespace mark::test

@@ -18,12 +18,7 @@ namespace fs = std::filesystem;
 using Result = test::CliResult;
 const auto run = test::run_cli;
 
-fs::path temp_file(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "marker_peen_cli_test";
-  fs::create_directories(dir);
-  fs::remove(dir / name);
-  return dir / name;
-}
+fs::path temp_file(const std::string& name) { return test::fresh_temp_file("marker_peen_cli_test", name); }
 
 TEST(PeenCli, JsonForTheChosenPlanner) {
   const Result r = run({"peen", "AB12-345678C", "--height", "3.175", "--json"});

@@ -67,10 +67,7 @@ class CxfParser {
     if (current) check_count(*current);
     orphans_.flush(warnings_, source_);
 
-    return loaders::build_font(source_, loaders::header_metrics(header_), std::move(glyphs_),
-                               {.nominal_cap_height = loaders::kLibreCadTextHeight,
-                                .advance_after_right_edge = header_.letter_spacing},
-                               reader_.line_number());
+    return loaders::build_librecad_font(source_, header_, std::move(glyphs_), reader_.line_number());
   }
 
  private:
@@ -89,10 +86,7 @@ class CxfParser {
     }
     const auto [it, fresh] = index_.try_emplace(h.code_point, glyphs_.size());
     if (!fresh) {
-      loaders::warn(warnings_, source_, n,
-                    "duplicate glyph " + describe_code_point(h.code_point) +
-                        " ignored (first defined at line " +
-                        std::to_string(glyphs_[it->second].line) + ")");
+      loaders::warn_duplicate_glyph(warnings_, source_, n, h.code_point, glyphs_[it->second].line);
       discarded = RawGlyph{};
       discarded.line = n;
       current_info_ = info;

@@ -73,10 +73,7 @@ class LffParser {
     std::vector<RawGlyph> raw;
     raw.reserve(glyphs_.size());
     for (LffGlyph& g : glyphs_) raw.push_back(std::move(g.raw));
-    return loaders::build_font(source_, loaders::header_metrics(header_), std::move(raw),
-                               {.nominal_cap_height = loaders::kLibreCadTextHeight,
-                                .advance_after_right_edge = header_.letter_spacing},
-                               reader_.line_number());
+    return loaders::build_librecad_font(source_, header_, std::move(raw), reader_.line_number());
   }
 
  private:
@@ -90,10 +87,7 @@ class LffParser {
     const auto [it, fresh] = index_.try_emplace(h.code_point, glyphs_.size());
     if (!fresh) {
       // LibreCAD keeps the first definition.
-      loaders::warn(warnings_, source_, n,
-                    "duplicate glyph " + describe_code_point(h.code_point) +
-                        " ignored (first defined at line " +
-                        std::to_string(glyphs_[it->second].raw.line) + ")");
+      loaders::warn_duplicate_glyph(warnings_, source_, n, h.code_point, glyphs_[it->second].raw.line);
       discarded = LffGlyph{};
       return &discarded;
     }

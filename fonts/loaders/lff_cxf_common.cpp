@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "fonts/error.hpp"
+#include "fonts/loaders/font_builder.hpp"
 #include "fonts/loaders/numbers.hpp"
 #include "fonts/utf8.hpp"
 
@@ -118,6 +119,21 @@ void OrphanLines::report(Warnings* warnings, const std::string& source) {
        "ignored " + std::to_string(count_) + (count_ == 1 ? " line" : " lines") +
            " outside any glyph (no '[XXXX]' header above since the last blank line)");
   count_ = 0;
+}
+
+void warn_duplicate_glyph(Warnings* warnings, const std::string& source, std::size_t line,
+                          char32_t code_point, std::size_t first_line) {
+  warn(warnings, source, line,
+       "duplicate glyph " + describe_code_point(code_point) + " ignored (first defined at line " +
+           std::to_string(first_line) + ")");
+}
+
+StrokeFont build_librecad_font(const std::string& source, const LffCxfHeader& header,
+                               std::vector<RawGlyph> glyphs, std::size_t last_line) {
+  return build_font(source, header_metrics(header), std::move(glyphs),
+                    {.nominal_cap_height = kLibreCadTextHeight,
+                     .advance_after_right_edge = header.letter_spacing},
+                    last_line);
 }
 
 }  // namespace mark::loaders

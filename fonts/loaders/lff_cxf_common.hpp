@@ -5,8 +5,10 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "fonts/loaders.hpp"
+#include "fonts/loaders/raw_glyph.hpp"
 #include "fonts/loaders/text_lines.hpp"
 
 namespace mark::loaders {
@@ -62,5 +64,14 @@ class OrphanLines {
 
 // Metrics the header states, before the measured ones are added.
 FontMetrics header_metrics(const LffCxfHeader& header);
+
+// The warning for a glyph defined twice (both formats keep the first, as LibreCAD does).
+void warn_duplicate_glyph(Warnings* warnings, const std::string& source, std::size_t line,
+                          char32_t code_point, std::size_t first_line);
+
+// The font from its glyphs, with the header's metrics and LibreCAD's spacing rules: nominal
+// text height 9, advance = rightmost point + LetterSpacing.
+StrokeFont build_librecad_font(const std::string& source, const LffCxfHeader& header,
+                               std::vector<RawGlyph> glyphs, std::size_t last_line);
 
 }  // namespace mark::loaders

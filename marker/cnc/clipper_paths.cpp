@@ -46,20 +46,23 @@ Paths stroke_polylines(const Figure& figure, double chord_tol_mm) {
   return out;
 }
 
-Paths grow_strokes(const Paths& strokes, double radius_mm, double arc_tol_mm) {
+namespace {
+// Round-joined offset by delta (mm) of open strokes or closed regions, in nanometres.
+Paths round_offset(const Paths& paths, EndType ends, double delta_mm, double arc_tol_mm) {
   ClipperOffset co(2.0, arc_tol_mm * kNmPerMm);
-  co.AddPaths(strokes, jtRound, etOpenRound);
-  Paths grown;
-  co.Execute(grown, radius_mm * kNmPerMm);
-  return grown;
-}
-
-Paths offset_region(const Paths& region, double delta_mm, double arc_tol_mm) {
-  ClipperOffset co(2.0, arc_tol_mm * kNmPerMm);
-  co.AddPaths(region, jtRound, etClosedPolygon);
+  co.AddPaths(paths, jtRound, ends);
   Paths out;
   co.Execute(out, delta_mm * kNmPerMm);
   return out;
+}
+}  // namespace
+
+Paths grow_strokes(const Paths& strokes, double radius_mm, double arc_tol_mm) {
+  return round_offset(strokes, etOpenRound, radius_mm, arc_tol_mm);
+}
+
+Paths offset_region(const Paths& region, double delta_mm, double arc_tol_mm) {
+  return round_offset(region, etClosedPolygon, delta_mm, arc_tol_mm);
 }
 
 namespace {

@@ -1,6 +1,11 @@
 #pragma once
 // Test support: the geometric checks every CNC test applies to the moves LinuxCNC's rs274
 // interpreted from a generated program, against the Figure the program was made from.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <tuple>
+
 #include "marker/cnc/cut_settings.hpp"
 #include "marker/cnc/gcode_options.hpp"
 #include "marker/cnc/protrusion.hpp"
@@ -21,6 +26,18 @@ enum class Variant { upright, mirrored, sheared };
 const char* name(Dialect d);
 const char* name(Fit f);
 const char* name(Variant v);
+
+// Every dialect × fitting × variant, as the rs274 suites run them, with readable test names.
+using Case = std::tuple<Dialect, Fit, Variant>;
+inline auto all_cases() {
+  return ::testing::Combine(::testing::Values(Dialect::linuxcnc, Dialect::fanuc, Dialect::plain),
+                            ::testing::Values(Fit::linear, Fit::inclined, Fit::circular),
+                            ::testing::Values(Variant::upright, Variant::mirrored, Variant::sheared));
+}
+inline std::string case_name(const ::testing::TestParamInfo<Case>& info) {
+  return std::string(name(std::get<0>(info.param))) + "_" + name(std::get<1>(info.param)) + "_" +
+         name(std::get<2>(info.param));
+}
 
 struct DepressionCheck {
   std::size_t cutting_moves = 0;

@@ -16,7 +16,6 @@
 namespace mark::test {
 namespace {
 
-using Case = std::tuple<Dialect, Fit, Variant>;
 
 class DepressionRs274 : public ::testing::TestWithParam<Case> {};
 
@@ -62,15 +61,7 @@ TEST_P(DepressionRs274, RunsToTheEndAndCutsExactlyTheStrokes) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllDialectsFitsVariants, DepressionRs274,
-    ::testing::Combine(::testing::Values(Dialect::linuxcnc, Dialect::fanuc, Dialect::plain),
-                       ::testing::Values(Fit::linear, Fit::inclined, Fit::circular),
-                       ::testing::Values(Variant::upright, Variant::mirrored, Variant::sheared)),
-    [](const ::testing::TestParamInfo<Case>& info) {
-      return std::string(name(std::get<0>(info.param))) + "_" + name(std::get<1>(info.param)) + "_" +
-             name(std::get<2>(info.param));
-    });
+INSTANTIATE_TEST_SUITE_P(AllDialectsFitsVariants, DepressionRs274, all_cases(), case_name);
 
 TEST(DepressionRs274, InchProgramCutsTheSameStrokes) {
   FigureSpec spec;

@@ -20,7 +20,6 @@ namespace {
 
 using ClipperLib::Paths;
 
-using Case = std::tuple<Dialect, Fit, Variant>;
 class ProtrusionRs274 : public ::testing::TestWithParam<Case> {};
 
 TEST_P(ProtrusionRs274, KeepsTheLettersAndClearsThePlate) {
@@ -54,15 +53,7 @@ TEST_P(ProtrusionRs274, KeepsTheLettersAndClearsThePlate) {
   EXPECT_NEAR(deepest, -s.depth_mm, 1e-4);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllDialectsFitsVariants, ProtrusionRs274,
-    ::testing::Combine(::testing::Values(Dialect::linuxcnc, Dialect::fanuc, Dialect::plain),
-                       ::testing::Values(Fit::linear, Fit::inclined, Fit::circular),
-                       ::testing::Values(Variant::upright, Variant::mirrored, Variant::sheared)),
-    [](const ::testing::TestParamInfo<Case>& info) {
-      return std::string(name(std::get<0>(info.param))) + "_" + name(std::get<1>(info.param)) + "_" +
-             name(std::get<2>(info.param));
-    });
+INSTANTIATE_TEST_SUITE_P(AllDialectsFitsVariants, ProtrusionRs274, all_cases(), case_name);
 
 TEST(Protrusion, ReportsGapsNarrowerThanTheToolInsteadOfGouging) {
   FigureSpec spec;

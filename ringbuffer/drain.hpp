@@ -5,7 +5,7 @@
 //
 // Underrun (real time only): if the memory holds less than a block when it is due and the
 // producer has not closed it, the drain sends what there is and pads the block with
-// hold_sample(last) — the last position with the laser off — counts it and carries on.
+// safe_sample(last) — for a laser the last position with the laser off — counts it and carries on.
 // Virtual time drains as fast as the sink accepts; an empty, unclosed memory then means "wait",
 // never underrun, because no deadline exists.
 //
@@ -47,7 +47,7 @@ struct DrainOptions {
   double spin_us = 80;              // wake this long before a deadline and spin the rest
 };
 
-template <class T>
+template <HasSafeSample T>
 class Drain {
  public:
   // The memory, sink and filter (optional) must outlive the drain.
@@ -146,7 +146,7 @@ class Drain {
         last_ = block[n - 1];
       }
       if (n < B && !end) {  // real-time underrun: pad with hold samples, laser off
-        const T hold = hold_sample(last_);
+        const T hold = safe_sample(last_);
         std::fill(block.begin() + n, block.end(), hold);
         if (!starved) ++stats_.underrun_events;
         stats_.underrun_samples += B - n;

@@ -13,8 +13,8 @@ struct ScanSample {
   std::uint8_t power = 255;  // 0..255 of the pen's power, where the device supports it
 };
 
-// What the drain emits on an underrun: stay at the last position with the laser off.
-inline ScanSample hold_sample(const ScanSample& last) {
+// The safe sample (ringbuffer/sample_traits.hpp): stay at the last position with the laser off.
+inline ScanSample safe_sample(const ScanSample& last) {
   ScanSample s = last;
   s.laser = false;
   return s;

@@ -8,6 +8,9 @@ packages=(
   libeigen3-dev libboost-dev libfreetype-dev libcairo2-dev libpng-dev
   libusb-1.0-0-dev libcli11-dev nlohmann-json3-dev libpolyclipping-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libsqlite3-dev sqlite3 libpq-dev postgresql   # serial store: SQLite (default) and PostgreSQL (tests start a private server)
+  libzint-dev libdmtx-dev libzbar-dev           # 2D codes: zint encodes, libdmtx and ZBar decode the simulated mark
+  umockdev libumockdev-dev                      # the emulated LMC board behind real libusb (usbfs ioctls)
   hershey-fonts-data librecad-data
   libpython3.11 libedit2 libtirpc3   # runtime of LinuxCNC's rs274 (G-code validator, fetch_rs274.sh)
 )

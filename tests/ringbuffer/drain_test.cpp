@@ -180,9 +180,8 @@ TEST(Drain, AbortHaltsTheDeviceAndStops) {
   EXPECT_LT(sink.samples.size(), 20000u);
 }
 
-TEST(Drain, HoldSampleForATypeWithoutALaserRepeatsTheLastSample) {
-  EXPECT_EQ(hold_sample(42), 42);
-  const ScanSample h = hold_sample(lit_at(3, 4));
+TEST(Drain, SafeScanSampleHoldsThePositionWithTheLaserOff) {
+  const ScanSample h = safe_sample(lit_at(3, 4));
   EXPECT_FALSE(h.laser);
   EXPECT_EQ(h.x_mm, 3.0f);
   EXPECT_EQ(h.y_mm, 4.0f);

@@ -1,0 +1,35 @@
+#include "driver/device.hpp"
+
+namespace mark {
+
+std::string_view to_string(DeviceLevel level) {
+  switch (level) {
+    case DeviceLevel::samples: return "samples";
+    case DeviceLevel::commands: return "commands";
+  }
+  return "?";
+}
+
+std::string_view to_string(DeviceState state) {
+  switch (state) {
+    case DeviceState::idle: return "idle";
+    case DeviceState::running: return "running";
+    case DeviceState::done: return "done";
+    case DeviceState::aborted: return "aborted";
+    case DeviceState::failed: return "failed";
+  }
+  return "?";
+}
+
+std::string_view to_string(FaultCategory category) {
+  switch (category) {
+    case FaultCategory::transport: return "transport";
+    case FaultCategory::timeout: return "timeout";
+    case FaultCategory::underrun: return "underrun";
+    case FaultCategory::out_of_field: return "out_of_field";
+    case FaultCategory::device: return "device";
+  }
+  return "?";
+}
+
+}  // namespace mark

@@ -1,0 +1,185 @@
+#pragma once
+// One interface for every device the engine drives: the simulated scanner, a USB vector board
+// (BJJCZ LMC), a point DAC, the gravure stylus head. A device runs jobs through one lifecycle
+//
+//   idle ─begin_job─► running ─end_job─► done | failed        abort() from any state and any
+//     ▲                  │                                      thread: laser (stylus) off now,
+//     └──── reset() ◄────┴──── aborted | failed | done          and it stays off until reset()
+//
+// and takes its work at one of two levels (describe().level):
+//
+// - samples: fixed-rate devices (the simulated scanner, an XY2-100 output, the gravure stylus).
+//   They are a SampleDevice<T>: the line memory and the fixed-rate drain feed them T samples
+//   (ringbuffer/sink.hpp), and the drain emits the sample type's safe sample (laser off, stylus
+//   lifted) on underrun, abort and at the end of the job.
+// - commands: vector boards (LMC, RTC class) that run their own clock. They are a
+//   CommandDevice: the job hands them DeviceCommands (driver/device_command.hpp) converted from
+//   the plan — jumps, marks, arcs where the board has them (chords otherwise), dwells — and the
+//   pen's delays and laser settings go to the board as parameters (JobHeader::pens), so the host
+//   never applies its own laser delay line or scanner delays a second time.
+//
+// Faults carry a category and a message; the report of a job says how far it got, so the
+// caller can say what was and was not marked. Devices are re-armable: a station runs for months.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "driver/device_command.hpp"
+#include "driver/device_error.hpp"
+#include "driver/vec2.hpp"
+#include "ringbuffer/sink.hpp"
+
+namespace mark {
+
+enum class DeviceLevel { samples, commands };
+
+enum class DeviceState {
+  idle,     // ready for begin_job
+  running,  // between begin_job and end_job
+  done,     // the job ran to its end
+  aborted,  // abort() was called (cancel, Ctrl-C): laser off
+  failed    // a fault stopped the job: laser off
+};
+
+enum class FaultCategory {
+  transport,     // the link to the device failed (USB transfer error, unplug)
+  timeout,       // the device did not answer in time
+  underrun,      // the device (or the drain feeding it) ran out of samples mid-job
+  out_of_field,  // a coordinate outside the device's field was refused before it was sent
+  device         // the device reported a fault of its own
+};
+
+std::string_view to_string(DeviceLevel level);
+std::string_view to_string(DeviceState state);
+std::string_view to_string(FaultCategory category);
+
+struct DeviceFault {
+  FaultCategory category = FaultCategory::device;
+  std::string message;     // one line naming the device and what happened
+  // Sample-level: index of the first sample the device did not output as commanded.
+  // Command-level: index of the first command of the job it did not execute.
+  std::uint64_t at = 0;
+};
+
+// Thrown by devices (and by the job runner on their behalf) when a fault stops a job.
+class DeviceFaultError : public DeviceError {
+ public:
+  explicit DeviceFaultError(DeviceFault fault)
+      : DeviceError(fault.message), fault_(std::move(fault)) {}
+  const DeviceFault& fault() const { return fault_; }
+
+ private:
+  DeviceFault fault_;
+};
+
+// What a device is and what it accepts. Field: a square centred on the origin, |x|, |y| ≤
+// field_mm / 2, in the field frame (mm).
+struct DeviceDescription {
+  std::string name;                 // e.g. "sim SL10", "lmc 0123456789"
+  DeviceLevel level = DeviceLevel::samples;
+  double field_mm = 110;
+  double tick_s = 10e-6;            // sample period (samples) or the board's own clock (commands)
+  // Command level: whether arcs can be sent as arcs; if not, the job converts them to chords
+  // within chord_tolerance_mm.
+  bool arcs = false;
+  double chord_tolerance_mm = 0.005;
+  double max_speed_mm_s = 0;        // fastest jump or mark the device executes (0: no limit known)
+  double max_dwell_s = 0;           // longest single dwell command (0: no limit)
+  bool laser_settings = false;      // power / frequency / pulse width can be set per pen
+  // Samples the device buffers itself beyond what the drain hands it (a DAC's FIFO); the line
+  // memory's lead is sized so such a device never starves. 0 for the simulator.
+  std::size_t fifo_samples = 0;
+};
+
+// Laser source settings of a pen (fiber / MOPA).
+struct LaserSettings {
+  double power_pct = 100;       // 0..100 % of the source's power
+  double frequency_khz = 30;    // pulse repetition rate (Q-switch frequency)
+  double pulse_width_ns = 0;    // MOPA pulse width; 0 = the source's default
+};
+
+// A pen as a command-level device applies it: speeds, delays and laser settings. Sample-level
+// devices use only `laser` (the simulator scales its dose by the power).
+struct DevicePen {
+  double mark_speed_mm_s = 1000;
+  double jump_speed_mm_s = 5000;
+  double laser_on_delay_s = 0;
+  double laser_off_delay_s = 0;
+  double jump_delay_s = 0;
+  double mark_delay_s = 0;
+  double polygon_delay_s = 0;
+  LaserSettings laser;
+};
+
+struct JobHeader {
+  std::string name;                   // for messages and logs
+  double field_mm = 110;              // the job's field; must fit the device's
+  std::vector<DevicePen> pens;        // at least one; DeviceCommand::pen indexes it
+  // Sample level: how many samples the job will hand over (0: unknown). Used to size buffers
+  // before the first sample so the drain thread never allocates, and for progress.
+  std::uint64_t expected_samples = 0;
+  // Where the lit beam will go (polylines in mm, as planned): a simulator sizes its dose
+  // raster from it before the first sample. Other devices ignore it.
+  std::vector<std::vector<Vec2>> lit_paths;
+};
+
+// The device's own figures for a job, for `--json` and the audit log. Keys name their units
+// (`commands`, `packets`, `device_time_s`).
+using DeviceFigures = std::vector<std::pair<std::string, double>>;
+
+struct DeviceReport {
+  DeviceState outcome = DeviceState::done;  // done, aborted or failed
+  std::optional<DeviceFault> fault;         // set when failed
+  std::uint64_t samples_out = 0;            // sample level: samples output
+  std::uint64_t commands_done = 0;          // command level: commands executed
+  double device_time_s = 0;                 // time the device spent on the job
+  DeviceFigures figures;
+};
+
+struct DeviceStatus {
+  DeviceState state = DeviceState::idle;
+  Vec2 position{0, 0};           // last known commanded (or measured) position, mm
+  bool laser_on = false;
+  std::optional<DeviceFault> fault;
+  std::uint64_t progress = 0;    // samples output or commands executed in this job
+};
+
+class Device {
+ public:
+  virtual ~Device() = default;
+
+  virtual DeviceDescription describe() const = 0;
+  // idle → running. Throws DeviceFaultError (the device cannot start) or InputError (the
+  // header does not fit the device, e.g. a field larger than the device's).
+  virtual void begin_job(const JobHeader& header) = 0;
+  // Waits until the device has finished everything it was given (or stopped); running → done,
+  // or the state abort()/a fault left. Never throws for a fault: the report carries it.
+  virtual DeviceReport end_job() = 0;
+  // Any state, any thread, any time: laser (stylus) off now; the rest of the job is not
+  // executed. Idempotent. Must not throw or block for long (a USB stop is sent, not awaited).
+  virtual void abort() noexcept = 0;
+  virtual DeviceStatus status() const = 0;
+  // done / aborted / failed → idle (clears the fault); idle stays idle. Throws DeviceFaultError
+  // if the device cannot be brought back (e.g. it was unplugged).
+  virtual void reset() = 0;
+};
+
+// A fixed-rate device: the drain writes T samples to it (Sink<T>::write on the drain thread,
+// Sink<T>::halt on a fault or abort). The drain, not the device, emits safe samples.
+template <class T>
+class SampleDevice : public Device, public Sink<T> {};
+
+// A vector board: the job submits device commands in order, from the producer thread, while
+// the board executes them on its own clock. submit() may block for flow control; it throws
+// DeviceFaultError on a fault (and leaves the laser off), after which only abort / end_job /
+// status / reset are meaningful.
+class CommandDevice : public Device {
+ public:
+  virtual void submit(std::span<const DeviceCommand> commands) = 0;
+};
+
+}  // namespace mark

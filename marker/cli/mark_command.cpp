@@ -24,6 +24,7 @@
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/output_file.hpp"
+#include "marker/job/auto_speed.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
 #include "marker/preview/mark_preview.hpp"
@@ -38,7 +39,7 @@ struct MarkArgs {
   std::string head = "SL10";
   std::string corner = "blanking";
   std::string order = "glyph";
-  double speed_mm_s = 1000;
+  std::string speed = "auto";  // mm/s, or auto: from the figure's tightest curve and the head
   double jump_speed_mm_s = 0;  // 0: the head's default
   double tick_us = 10;
   std::optional<double> run_in_mm;
@@ -65,7 +66,22 @@ JobSpec make_spec(const MarkArgs& a) {
   spec.text = unescape_text(a.text);
   spec.layout = to_layout_options(a.layout);
   spec.order = parse_stroke_order(a.order);
-  spec.pen = pen_for_head(spec.head, parse_corner_strategy(a.corner), a.speed_mm_s,
+  double speed_mm_s = 0;
+  if (a.speed == "auto") {
+    speed_mm_s = auto_mark_speed_mm_s(layout_text(spec.text, *spec.font, spec.layout), spec.head);
+  } else {
+    std::size_t used = 0;
+    try {
+      speed_mm_s = std::stod(a.speed, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != a.speed.size() || !(speed_mm_s > 0) || !(speed_mm_s <= spec.head.max_speed_mm_s))
+      throw InputError("--speed '" + a.speed + "' must be auto or a speed above 0 and at most " +
+                       std::to_string(static_cast<int>(spec.head.max_speed_mm_s)) +
+                       " mm/s (head " + spec.head.name + ")");
+  }
+  spec.pen = pen_for_head(spec.head, parse_corner_strategy(a.corner), speed_mm_s,
                           a.tick_us * 1e-6);
   if (a.jump_speed_mm_s != 0) {
     spec.pen.jump_speed_mm_s = a.jump_speed_mm_s;
@@ -272,7 +288,10 @@ Command make_mark_command() {
         sub->add_option("--head", a->head, "scan head preset: SL10, SL14, cheap")->capture_default_str();
         sub->add_option("--corner", a->corner, "corner strategy: blanking, delays, none")->capture_default_str();
         sub->add_option("--order", a->order, "stroke order: glyph, shortest (least jumping)")->capture_default_str();
-        sub->add_option("--speed", a->speed_mm_s, "marking speed, mm/s")->capture_default_str();
+        sub->add_option("--speed", a->speed,
+                        "marking speed, mm/s, or auto: the fastest (up to 1000 mm/s) at which the "
+                        "head's lag shrinks the tightest curve by at most 8 µm")
+            ->capture_default_str();
         sub->add_option("--jump-speed", a->jump_speed_mm_s,
                         "jump speed, mm/s (default: half the head's positioning limit)");
         sub->add_option("--tick", a->tick_us, "locus tick, µs")->capture_default_str();

@@ -129,3 +129,28 @@ TEST(CliMark, CtrlCPutsTheLaserOutWithinOneBlockAndExits130) {
 
 }  // namespace
 }  // namespace mark
+
+namespace mark {
+namespace {
+
+TEST(CliMark, DefaultSpeedMarksOrdinaryTextAtHighQuality) {
+  // --speed auto (the default) from the tightest curve: 1–5 mm text of capitals, digits and
+  // lower case (the dots of i and j are the tightest curves) is "high" on the simulator; at
+  // the old fixed 1000 mm/s the 1 and 2 mm capitals were "poor".
+  for (const char* text : {"ABC", "SN 2026-000123", "ijk"})
+    for (const char* h : {"1", "2", "3", "5"}) {
+      const auto r = test::run_cli({"mark", text, "--height", h, "--align", "center",
+                                    "--virtual-time", "--json"});
+      ASSERT_EQ(r.code, 0) << r.err;
+      const auto j = nlohmann::json::parse(r.out);
+      EXPECT_EQ(j["quality"]["class"], "high") << text << " at " << h << " mm, " << j["speed_mm_s"];
+      EXPECT_LE(j["speed_mm_s"].get<double>(), 1000.0);
+    }
+  const auto old = test::run_cli({"mark", "ABC", "--height", "1", "--align", "center", "--speed",
+                                  "1000", "--virtual-time", "--json"});
+  EXPECT_EQ(nlohmann::json::parse(old.out)["quality"]["class"], "poor");
+  EXPECT_NE(old.err.find("warning: poor mark predicted"), std::string::npos) << old.err;
+}
+
+}  // namespace
+}  // namespace mark

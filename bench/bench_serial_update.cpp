@@ -7,6 +7,7 @@
 
 #include "fonts/catalog.hpp"
 #include "marker/job/head_pen.hpp"
+#include "marker/layout/layout.hpp"
 #include "marker/plan/replan.hpp"
 #include "marker/vars/render.hpp"
 

@@ -34,7 +34,7 @@ const Plan& Replanner::update(const Figure& figure) {
   state.bounds.add(home_);
   if (k < before_.size()) state = before_[k];
   before_.resize(k);
-  plan_.commands.resize(state.command);
+  plan_.commands.erase(plan_.commands.begin() + static_cast<std::ptrdiff_t>(state.command), plan_.commands.end());
   PlanBuilder b{plan_.pen, plan_.commands,
                 plan_.commands.empty() ? home_ : plan_.commands.back().end(), {}};
   for (std::size_t g = k; g < n; ++g) {

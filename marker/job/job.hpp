@@ -66,7 +66,10 @@ struct JobOptions {
   std::size_t first_block = 256;      // the first write is small so the drain starts early
   std::size_t block = 4096;           // later producer writes
   // Real time: samples stored before the drain's clock starts, on top of the device's own
-  // FIFO (DeviceDescription::fifo_samples), so a device with a FIFO never starves. 0 = 2 ms.
+  // FIFO (DeviceDescription::fifo_samples), so a device with a FIFO never starves. 0 = 50 ms:
+  // the producer makes that in tens of µs, but on a loaded machine it can lose the CPU for
+  // milliseconds right after the first block (seen: 2 ms was not enough at load 20 on 2 cores);
+  // once running, the memory (0.66 s) fills far ahead of the drain.
   std::size_t lead_samples = 0;
   bool realtime = true;               // real time: ask for SCHED_FIFO and locked memory
   const StopFlag* stop = nullptr;     // stop requests (Ctrl-C); not owned

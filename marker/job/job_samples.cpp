@@ -23,7 +23,7 @@ DrainOptions drain_options(const JobSpec& spec, const JobOptions& options,
   // 1 ms blocks: the stop latency bound and the scheduling granularity of the drain.
   d.block_samples = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(1e-3 / spec.pen.tick_s)));
   d.virtual_time = options.virtual_time;
-  const std::size_t lead = options.lead_samples ? options.lead_samples : 2 * d.block_samples;
+  const std::size_t lead = options.lead_samples ? options.lead_samples : 50 * d.block_samples;
   d.start_fill = std::min(options.memory_samples, lead + device.fifo_samples);
   d.realtime_priority = options.realtime ? 80 : 0;
   d.stop = options.stop;

@@ -16,8 +16,13 @@ std::map<std::string, std::string> job_variables(const JobFile& job,
     if (const TextObject* t = o.text())
       for (const std::string& v : t->text.variables()) used.push_back(v);
   for (const auto& [name, value] : sets) {
-    if (std::find(used.begin(), used.end(), name) == used.end())
-      throw InputError("--set " + name + "=…: no template of " + job.source + " uses {var:" + name + "}");
+    if (std::find(used.begin(), used.end(), name) == used.end()) {
+      // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on the chained operator+.
+      std::string msg = "--set ";
+      msg.append(name).append("=…: no template of ").append(job.source);
+      msg.append(" uses {var:").append(name).append("}");
+      throw InputError(msg);
+    }
     values[name] = value;
   }
   return values;
@@ -48,7 +53,9 @@ JobFonts::JobFonts(const JobFile& job, std::vector<std::string>* warnings) {
     try {
       fonts_[t->font] = open_font(t->font, &w);
     } catch (const InputError& e) {
-      throw InputError(job.source + ": object \"" + o.name + "\": " + e.what());
+      std::string msg = job.source;
+      msg.append(": object \"").append(o.name).append("\": ").append(e.what());
+      throw InputError(msg);
     }
     if (warnings) warnings->insert(warnings->end(), w.begin(), w.end());
   }

@@ -1,0 +1,59 @@
+#pragma once
+// A stylus job end to end, the same way the laser runs: the drive source (toolpath or test
+// pattern) is filtered by the tuning biquads on the producer thread — every sample, before it
+// enters the line memory — and written into LineMemory<StylusSample>, which the fixed-rate
+// Drain<StylusSample> reads out at 200 kHz into a sample-level device. In virtual time (the
+// default for the simulated head) the drain runs as fast as the device takes samples; device
+// time is what is reported either way.
+//
+// Cancel (Ctrl-C): `cancelled` is polled between batches; when it returns true the drain is
+// aborted (the device halts: stylus lifted) and the result says so. A device fault stops the
+// producer the same way and comes back in the device report.
+#include <functional>
+
+#include "driver/device.hpp"
+#include "marker/gravure/biquad_cascade.hpp"
+#include "marker/gravure/drive_source.hpp"
+#include "marker/gravure/tuning_filter.hpp"
+#include "ringbuffer/drain_stats.hpp"
+#include "ringbuffer/stylus_sample.hpp"
+
+namespace mark {
+
+// Filters a drive source into stylus samples (the producer's work, without the line memory):
+// what the benchmark measures and what run_stylus_job feeds the memory with.
+class StylusSampleStream {
+ public:
+  // bank may be null (unfiltered drive).
+  StylusSampleStream(DriveSource& source, const FilterBank* bank);
+  std::uint64_t total_samples() const { return source_.total_samples(); }
+  std::size_t next(std::span<StylusSample> out);
+
+ private:
+  DriveSource& source_;
+  bool filtered_;
+  BiquadCascade cascade_;
+  std::vector<double> drive_;
+  bool started_ = false;
+};
+
+struct StylusRunOptions {
+  bool virtual_time = true;
+  std::size_t memory_samples = 1u << 16;  // 0.33 s at 200 kHz
+  std::size_t block_samples = 1000;       // drain block: 5 ms
+  std::string job_name = "gravure";
+  std::function<bool()> cancelled;        // polled about every 4096 samples
+};
+
+struct StylusRunResult {
+  DeviceReport report;      // outcome, fault, samples out, device time
+  DrainStats drain;
+  std::uint64_t samples = 0;  // samples the producer generated
+  double wall_time_s = 0;
+  bool cancelled = false;
+};
+
+StylusRunResult run_stylus_job(DriveSource& source, const FilterBank* bank,
+                               SampleDevice<StylusSample>& device, const StylusRunOptions& options);
+
+}  // namespace mark

@@ -12,6 +12,7 @@
 
 #include "fonts/error.hpp"
 #include "marker/cli/commands.hpp"
+#include "marker/cli/print.hpp"
 #include "marker/cli/gravure_options.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/gravure/gravure_job.hpp"
@@ -44,13 +45,6 @@ struct GravureArgs {
   bool json = false;
   std::string preview;
 };
-
-template <class... T>
-void print(const char* format, T... values) {
-  char line[512];
-  std::snprintf(line, sizeof line, format, values...);
-  std::cout << line;
-}
 
 void check_setup(const CellSetup& s, const std::string& prefix) {
   check_range("--" + prefix + "-depth", s.full_cell_depth_um, kCellDepthRange);

@@ -11,6 +11,9 @@
 namespace mark {
 namespace {
 
+constexpr double kRelativeFloor = 0.01;
+constexpr double kReliableSnr = 10;  // |H| / σ for a point to count in peak search and error
+
 struct Peak {
   double freq_hz;
   double prominence_db;
@@ -66,7 +69,9 @@ struct ResponseFunctor {
     Eigen::VectorXd b(2 * k);
     for (Eigen::Index p = 0; p < k; ++p) {
       const std::complex<double> h = points[p].gain;
-      const double w = 1 / std::abs(h);
+      // Weighted by the point's uncertainty: its measurement noise, or 1 % of |H| where the
+      // noise is smaller, so a well-measured small gain counts as much as a peak.
+      const double w = 1 / std::hypot(kRelativeFloor * std::abs(h), points[p].sigma);
       for (int i = 0; i < modes; ++i) {
         const std::complex<double> hi = held_response({{m.modes[i]}}, points[p].freq_hz);
         a(2 * p, i) = hi.real() * w;
@@ -90,20 +95,12 @@ struct ResponseFunctor {
 
 }  // namespace
 
-HeadFit fit_head(std::span<const ResponsePoint> response, int modes) {
-  if (response.size() < 8) throw InputError("head fit: at least 8 response points are needed");
-  for (const ResponsePoint& p : response)
-    if (!(std::abs(p.gain) > 0) || !std::isfinite(std::abs(p.gain)))
-      throw InputError("head fit: the response at " + std::to_string(p.freq_hz) + " Hz is zero or not finite");
-  std::vector<Peak> peaks = find_peaks(response, 3.0);
-  if (peaks.empty()) throw InputError("head fit: the measured response has no resonance peak (3 dB or more)");
-  const int n = modes > 0 ? modes : static_cast<int>(std::min<std::size_t>(peaks.size(), 4));
-  if (static_cast<int>(peaks.size()) < n)
-    throw InputError("head fit: " + std::to_string(n) + " resonances asked for, " + std::to_string(peaks.size()) +
-                     " found in the response");
+namespace {
+
+// Fits n modes started at the n most prominent peaks; the model with its residual.
+HeadFit fit_modes(std::span<const ResponsePoint> response, std::vector<Peak> peaks, int n) {
   peaks.resize(static_cast<std::size_t>(n));
   std::sort(peaks.begin(), peaks.end(), [](auto a, auto b) { return a.freq_hz < b.freq_hz; });
-
   ResponseFunctor f{response, n};
   Eigen::VectorXd theta(2 * n);
   for (int i = 0; i < n; ++i) {
@@ -116,19 +113,58 @@ HeadFit fit_head(std::span<const ResponsePoint> response, int modes) {
   lm.parameters.xtol = 1e-12;
   lm.parameters.ftol = 1e-12;
   lm.minimize(theta);
-
   HeadFit fit;
-  Eigen::VectorXd res;
-  fit.model = f.model(theta, &res);
-  fit.rms_relative_error = std::sqrt(res.squaredNorm() / static_cast<double>(response.size()));
+  fit.model = f.model(theta, nullptr);
   fit.evaluations = diff.evaluations;
   std::sort(fit.model.modes.begin(), fit.model.modes.end(), [](auto a, auto b) { return a.freq_hz < b.freq_hz; });
-  for (const StylusMode& m : fit.model.modes)
-    if (!(m.gain > 0) || !(m.damping > 0 && m.damping < 0.999))
-      throw InputError("head fit: the fit ended on a resonance at " + std::to_string(m.freq_hz) +
-                       " Hz with gain " + std::to_string(m.gain) + " and damping " + std::to_string(m.damping) +
-                       ", not a physical head; the response may be too noisy");
+  // The error over the points measured well enough to judge it.
+  double sum = 0;
+  int count = 0;
+  for (const ResponsePoint& p : response) {
+    if (std::abs(p.gain) < kReliableSnr * p.sigma) continue;
+    sum += std::norm((held_response(fit.model, p.freq_hz) - p.gain) / std::abs(p.gain));
+    ++count;
+  }
+  fit.rms_relative_error = count ? std::sqrt(sum / count) : 0;
   return fit;
+}
+
+bool physical(const StylusHeadModel& m) {
+  for (const StylusMode& mode : m.modes)
+    if (!(mode.gain > 0) || !(mode.damping > 0 && mode.damping < 0.999)) return false;
+  return true;
+}
+
+}  // namespace
+
+HeadFit fit_head(std::span<const ResponsePoint> response, int modes) {
+  if (response.size() < 8) throw InputError("head fit: at least 8 response points are needed");
+  for (const ResponsePoint& p : response)
+    if (!(std::abs(p.gain) > 0) || !std::isfinite(std::abs(p.gain)))
+      throw InputError("head fit: the response at " + std::to_string(p.freq_hz) + " Hz is zero or not finite");
+  // Peaks only where the measurement stands clear of its noise.
+  std::vector<ResponsePoint> reliable;
+  for (const ResponsePoint& p : response)
+    if (std::abs(p.gain) >= kReliableSnr * p.sigma) reliable.push_back(p);
+  std::vector<Peak> peaks = find_peaks(reliable, 3.0);
+  if (peaks.empty()) throw InputError("head fit: the measured response has no resonance peak (3 dB or more)");
+  if (modes > static_cast<int>(peaks.size()))
+    throw InputError("head fit: " + std::to_string(modes) + " resonances asked for, " + std::to_string(peaks.size()) +
+                     " found in the response");
+  // As many modes as peaks (at most 4); a fit that ends non-physical — a peak that was noise —
+  // is retried without the least prominent peak.
+  const int most = modes > 0 ? modes : static_cast<int>(std::min<std::size_t>(peaks.size(), 4));
+  const int least = modes > 0 ? modes : 1;
+  HeadFit fit;
+  for (int n = most; n >= least; --n) {
+    fit = fit_modes(response, peaks, n);
+    if (physical(fit.model)) return fit;
+  }
+  const StylusMode& bad = *std::find_if(fit.model.modes.begin(), fit.model.modes.end(),
+                                        [](const StylusMode& m) { return !physical({{m}}); });
+  throw InputError("head fit: the fit ended on a resonance at " + std::to_string(bad.freq_hz) + " Hz with gain " +
+                   std::to_string(bad.gain) + " and damping " + std::to_string(bad.damping) +
+                   ", not a physical head; the response may be too noisy");
 }
 
 }  // namespace mark

@@ -71,9 +71,17 @@ std::vector<ResponsePoint> SweepPattern::measure(std::span<const float> sensed) 
       aty += row * static_cast<double>(sensed[t.start + n]);
     }
     const Eigen::Vector3d p = ata.ldlt().solve(aty);
+    // The residual sets the uncertainty: var(a), var(b) = s² · diag((AᵀA)⁻¹).
+    double rss = 0;
+    for (std::uint64_t n = t.settle; n < t.length; ++n) {
+      const double r = sensed[t.start + n] - (p[0] + p[1] * std::cos(w * n) + p[2] * std::sin(w * n));
+      rss += r * r;
+    }
+    const double count = static_cast<double>(t.length - t.settle);
+    const Eigen::Matrix3d cov = ata.inverse() * (rss / std::max(1.0, count - 3));
     // y = Re{(a − j b) e^{jωn}},  drive = Re{−j A e^{jωn}}.
     const std::complex<double> y(p[1], -p[2]), u(0, -options_.amplitude_um);
-    out.push_back({t.freq_hz, y / u});
+    out.push_back({t.freq_hz, y / u, std::sqrt(cov(1, 1) + cov(2, 2)) / options_.amplitude_um});
   }
   return out;
 }

@@ -31,6 +31,7 @@ void validate(const SweepOptions& sweep);
 struct ResponsePoint {
   double freq_hz = 0;
   std::complex<double> gain;  // sensed position over commanded drive
+  double sigma = 0;           // standard error of `gain` (from the sine fit's residual)
 };
 
 class SweepPattern : public DriveSource {

@@ -74,7 +74,9 @@ StylusRunResult run_stylus_job(DriveSource& source, const FilterBank* bank, Samp
   } catch (const DeviceFaultError&) {
     // The fault is in the device's report; the device retracted the stylus already.
   } catch (...) {
-    if (!failure) failure = std::current_exception();
+    // After a cancel the aborted device refuses the drain's next block: that is how the drain
+    // learns to stop, not a failure.
+    if (!failure && !result.cancelled) failure = std::current_exception();
   }
   result.report = device.end_job();
   if (failure) std::rethrow_exception(failure);

@@ -203,8 +203,9 @@ void SimStylusHead::write(std::span<const StylusSample> block) {
     }
     if (meter_) meter_->add(cut);
   }
-  lifted_.store(lifted, std::memory_order_relaxed);
-  cutting_.store(!lifted && y > 0, std::memory_order_relaxed);
+  // Only ever set here: an abort() from another thread during this block must not be undone.
+  if (lifted) lifted_.store(true, std::memory_order_relaxed);
+  cutting_.store(!lifted_.load(std::memory_order_relaxed) && y > 0, std::memory_order_relaxed);
   samples_.fetch_add(block.size(), std::memory_order_relaxed);
 }
 

@@ -74,10 +74,12 @@ DeviceReport SimStylusHead::end_job() {
   lifted_ = true;
   cutting_ = false;
   if (meter_) meter_->finish();
+  // A job the drain halted (a stop, an underrun) ends aborted unless a fault of the head's own
+  // already failed it.
   DeviceState s = state_.load();
   if (s == DeviceState::running) {
-    state_ = DeviceState::done;
-    s = DeviceState::done;
+    s = halted_ ? DeviceState::aborted : DeviceState::done;
+    state_ = s;
   }
   DeviceReport r;
   r.outcome = s;

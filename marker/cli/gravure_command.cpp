@@ -93,7 +93,7 @@ GravureJobSpec make_spec(const GravureArgs& a) {
   }
   spec.compare_unfiltered = !a.no_compare;
   spec.run.virtual_time = !a.real_time;
-  spec.run.cancelled = [] { return InterruptGuard::requested(); };
+  spec.run.stop = &interrupt_flag();
   spec.image = read_gray_image(a.image);
   if (!a.mask.empty()) spec.mask = read_gray_image(a.mask);
   return spec;
@@ -122,12 +122,10 @@ void print_summary(const GravureReport& r) {
 }
 
 int run_gravure(const GravureArgs& a) {
-  InterruptGuard interrupts;
   const GravureJobSpec spec = make_spec(a);
   GravureReport report = run_gravure_job(spec);
-  if (report.cancelled) throw InputError("gravure: interrupted; the stylus was lifted and the job stopped");
-  if (report.filtered.run.report.outcome != DeviceState::done)
-    throw InputError("gravure: the job ended " + std::string(to_string(report.filtered.run.report.outcome)));
+  // Ctrl-C: the drain lifted the stylus within one block; nothing is written, exit 130.
+  if (report.cancelled) throw Interrupted();
   if (!a.preview.empty()) write_gravure_preview(report.layout, report.intended_um, report.engraved_um, a.preview);
   if (a.json)
     std::cout << to_json(spec, report).dump(2) << "\n";

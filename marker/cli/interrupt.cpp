@@ -1,32 +1,42 @@
 #include "marker/cli/interrupt.hpp"
 
 #include <atomic>
-#include <csignal>
 
 namespace mark::cli {
 namespace {
 
-std::atomic<bool> g_requested{false};
-struct sigaction g_old_int, g_old_term;
+std::atomic<StopFlag*> g_flag{nullptr};
+volatile std::sig_atomic_t g_signal = 0;
 
-extern "C" void on_signal(int) { g_requested.store(true); }
+extern "C" void on_signal(int sig) {
+  g_signal = sig;
+  if (StopFlag* f = g_flag.load(std::memory_order_acquire)) f->request();
+}
 
 }  // namespace
 
-InterruptGuard::InterruptGuard() {
-  g_requested = false;
-  struct sigaction sa {};
+InterruptScope::InterruptScope(StopFlag& flag) {
+  g_signal = 0;
+  g_flag.store(&flag, std::memory_order_release);
+  struct sigaction sa{};
   sa.sa_handler = on_signal;
   sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, &g_old_int);
-  sigaction(SIGTERM, &sa, &g_old_term);
+  sa.sa_flags = SA_RESTART;
+  sigaction(SIGINT, &sa, &old_int_);
+  sigaction(SIGTERM, &sa, &old_term_);
 }
 
-InterruptGuard::~InterruptGuard() {
-  sigaction(SIGINT, &g_old_int, nullptr);
-  sigaction(SIGTERM, &g_old_term, nullptr);
+InterruptScope::~InterruptScope() {
+  sigaction(SIGINT, &old_int_, nullptr);
+  sigaction(SIGTERM, &old_term_, nullptr);
+  g_flag.store(nullptr, std::memory_order_release);
 }
 
-bool InterruptGuard::requested() { return g_requested.load(); }
+int InterruptScope::signal() const { return g_signal; }
+
+StopFlag& interrupt_flag() {
+  static StopFlag flag;
+  return flag;
+}
 
 }  // namespace mark::cli

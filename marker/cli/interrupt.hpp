@@ -1,18 +1,32 @@
 #pragma once
-// Ctrl-C and SIGTERM during a long job: while an InterruptGuard lives, the signals only set a
-// flag that the job polls (it then stops cleanly: laser off, stylus lifted, nothing half
-// written); the previous handlers come back when the guard goes.
+// Ctrl-C and SIGTERM become a stop request while a job runs: the handler only sets a StopFlag
+// (async-signal-safe), the drain puts the laser out within one block and the command reports
+// where it stopped and exits 130. Outside the scope the previous handlers are back.
+#include <csignal>
+
+#include "ringbuffer/stop_flag.hpp"
+
 namespace mark::cli {
 
-class InterruptGuard {
+class InterruptScope {
  public:
-  InterruptGuard();
-  ~InterruptGuard();
-  InterruptGuard(const InterruptGuard&) = delete;
-  InterruptGuard& operator=(const InterruptGuard&) = delete;
+  explicit InterruptScope(StopFlag& flag);
+  ~InterruptScope();
+  InterruptScope(const InterruptScope&) = delete;
+  InterruptScope& operator=(const InterruptScope&) = delete;
 
-  // A signal arrived since the guard was made.
-  static bool requested();
+  // The signal that requested the stop (SIGINT, SIGTERM), or 0.
+  int signal() const;
+
+ private:
+  struct sigaction old_int_{}, old_term_{};
 };
+
+// The stop flag of the running command: cli::run() installs an InterruptScope on it around
+// every command, so Ctrl-C reaches whatever the command polls (a job's drain, a planner).
+StopFlag& interrupt_flag();
+
+// Exit status of a command stopped by a signal: 128 + SIGINT, as shells report it.
+inline constexpr int kExitInterrupted = 130;
 
 }  // namespace mark::cli

@@ -18,7 +18,7 @@ std::vector<ResponsePoint> response_test(SimStylusHead& head, const SweepOptions
   const StylusRunResult r = run_stylus_job(pattern, bank, head, run);
   head.reset();
   device_time_s += r.report.device_time_s;
-  if (r.report.fault) throw DeviceFaultError(*r.report.fault);
+  if (r.fault) throw DeviceFaultError(*r.fault);
   if (r.cancelled || r.report.outcome != DeviceState::done) {
     cancelled = true;
     return {};

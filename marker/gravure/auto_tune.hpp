@@ -21,7 +21,7 @@ struct AutoTuneOptions {
   TargetResponse target;
   int modes = 0;                           // 0: as many as the response shows
   double tolerance_db = 1;
-  StylusRunOptions run;                    // virtual time, cancel
+  StylusRunOptions run;                    // virtual time, stop flag
 };
 
 struct AutoTuneResult {

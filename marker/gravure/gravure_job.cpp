@@ -26,7 +26,7 @@ EngravingResult engrave(ImageCells& cells, const ToolpathOptions& toolpath_optio
   r.run = run_stylus_job(toolpath, bank, head, o);
   r.counts = toolpath.counts();
   head.reset();
-  if (r.run.report.fault) throw DeviceFaultError(*r.run.report.fault);
+  if (r.run.fault) throw DeviceFaultError(*r.run.fault);
   r.depth_error = depth_error(head.cut_profile_um(), intended);
   r.cell_error = cell_error(head.cells(), intended_cells);
   r.drive_peak_um = head.drive_peak_um();
@@ -83,7 +83,7 @@ GravureReport run_gravure_job(const GravureJobSpec& spec) {
     case FilterChoice::off: break;
     case FilterChoice::tuned: {
       AutoTuneOptions tuning = spec.tuning;
-      tuning.run.cancelled = spec.run.cancelled;
+      tuning.run.stop = spec.run.stop;
       tuning.run.virtual_time = spec.run.virtual_time;
       report.tuning = auto_tune(head, tuning);
       if (report.tuning->cancelled) {

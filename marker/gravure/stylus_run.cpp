@@ -5,7 +5,6 @@
 #include <exception>
 
 #include "driver/stylus_head_model.hpp"
-#include "ringbuffer/drain.hpp"
 #include "ringbuffer/line_memory.hpp"
 
 namespace mark {
@@ -28,6 +27,21 @@ std::size_t StylusSampleStream::next(std::span<StylusSample> out) {
   return n;
 }
 
+namespace {
+
+DeviceFault fault_of(std::exception_ptr error, std::uint64_t at) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const DeviceFaultError& e) {
+    return e.fault();
+  } catch (const std::exception& e) {
+    return {FaultCategory::device, e.what(), at};
+  }
+  return {FaultCategory::device, "unknown device error", at};
+}
+
+}  // namespace
+
 StylusRunResult run_stylus_job(DriveSource& source, const FilterBank* bank, SampleDevice<StylusSample>& device,
                                const StylusRunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -39,48 +53,55 @@ StylusRunResult run_stylus_job(DriveSource& source, const FilterBank* bank, Samp
   header.expected_samples = source.total_samples();
   device.begin_job(header);
 
-  StylusSampleStream stream(source, bank);
+  StylusSampleStream stream(source, bank);  // before the drain starts: its filters are built here
   LineMemory<StylusSample> memory(std::max<std::size_t>(options.memory_samples, 1));
-  DrainOptions drain_options;
-  drain_options.rate_hz = kStylusRate_hz;
-  drain_options.block_samples = std::max<std::size_t>(options.block_samples, 1);
-  drain_options.virtual_time = options.virtual_time;
-  Drain<StylusSample> drain(memory, device, drain_options);
+  DrainOptions d;
+  d.rate_hz = kStylusRate_hz;
+  d.block_samples = std::max<std::size_t>(options.block_samples, 1);
+  d.virtual_time = options.virtual_time;
+  d.start_fill = std::min(options.memory_samples, 2 * d.block_samples);
+  d.realtime_priority = 0;
+  d.stop = options.stop;
+  d.stop_at = options.stop_at;
+  Drain<StylusSample> drain(memory, device, d);
   drain.start();
   std::exception_ptr failure;
   try {
     std::vector<StylusSample> chunk(4096);
-    for (;;) {
-      if (options.cancelled && options.cancelled()) {
-        result.cancelled = true;
-        device.abort();
-        drain.abort();
-        break;
-      }
-      const std::size_t n = stream.next(chunk);
-      if (n == 0) break;
+    while (const std::size_t n = stream.next(chunk)) {
       result.samples += n;
-      if (!memory.push(std::span<const StylusSample>(chunk.data(), n))) break;  // aborted: a fault
+      if (!memory.push(std::span<const StylusSample>(chunk.data(), n))) break;  // the drain stopped
     }
     memory.close();
   } catch (...) {
-    // The producer failed: stop the drain and the device (stylus lifted) before reporting.
+    // The producer failed: stop the drain (the stylus gets its safe sample) before reporting.
     failure = std::current_exception();
-    device.abort();
     drain.abort();
   }
-  try {
-    result.drain = drain.join();
-  } catch (const DeviceFaultError&) {
-    // The fault is in the device's report; the device retracted the stylus already.
-  } catch (...) {
-    // After a cancel the aborted device refuses the drain's next block: that is how the drain
-    // learns to stop, not a failure.
-    if (!failure && !result.cancelled) failure = std::current_exception();
-  }
+  result.drain = drain.wait();
   result.report = device.end_job();
-  if (failure) std::rethrow_exception(failure);
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (failure) std::rethrow_exception(failure);
+
+  const DrainStats& st = result.drain;
+  switch (st.end) {
+    case DrainEnd::completed:
+      result.fault = result.report.fault;
+      break;
+    case DrainEnd::cancelled:
+      result.cancelled = true;
+      break;
+    case DrainEnd::underrun:
+      result.fault = DeviceFault{FaultCategory::underrun,
+                                 "line memory underrun at sample " + std::to_string(st.stop_sample) +
+                                     ": the toolpath fell behind the stylus clock; stylus lifted for the rest of the job",
+                                 st.stop_sample};
+      break;
+    case DrainEnd::device_fault:
+      result.fault = fault_of(drain.error(), st.stop_sample);
+      break;
+  }
+  if (st.end != DrainEnd::completed) result.stopped_at = result.fault ? result.fault->at : st.stop_sample;
   return result;
 }
 

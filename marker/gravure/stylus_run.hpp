@@ -6,16 +6,19 @@
 // default for the simulated head) the drain runs as fast as the device takes samples; device
 // time is what is reported either way.
 //
-// Cancel (Ctrl-C): `cancelled` is polled between batches; when it returns true the drain is
-// aborted (the device halts: stylus lifted) and the result says so. A device fault stops the
-// producer the same way and comes back in the device report.
-#include <functional>
+// Every ending is the drain's (ringbuffer/drain.hpp): the end of the job, a stop request
+// (Ctrl-C through a StopFlag, or the injected stop_at), an underrun in real time, a device
+// fault — and every one leaves the stylus on its safe sample, lifted clear of the cylinder. The
+// result says which, and where the job stopped.
+#include <cstdint>
+#include <optional>
+#include <string>
 
 #include "driver/device.hpp"
 #include "marker/gravure/biquad_cascade.hpp"
 #include "marker/gravure/drive_source.hpp"
 #include "marker/gravure/tuning_filter.hpp"
-#include "ringbuffer/drain_stats.hpp"
+#include "ringbuffer/drain.hpp"
 #include "ringbuffer/stylus_sample.hpp"
 
 namespace mark {
@@ -40,17 +43,20 @@ class StylusSampleStream {
 struct StylusRunOptions {
   bool virtual_time = true;
   std::size_t memory_samples = 1u << 16;  // 0.33 s at 200 kHz
-  std::size_t block_samples = 1000;       // drain block: 5 ms
+  std::size_t block_samples = 200;        // drain block: 1 ms, the bound on stop latency
   std::string job_name = "gravure";
-  std::function<bool()> cancelled;        // polled about every 4096 samples
+  const StopFlag* stop = nullptr;         // Ctrl-C, an operator; not owned
+  std::uint64_t stop_at = kNever;         // tests: stop as if requested at this sample
 };
 
 struct StylusRunResult {
-  DeviceReport report;      // outcome, fault, samples out, device time
-  DrainStats drain;
-  std::uint64_t samples = 0;  // samples the producer generated
+  DeviceReport report;            // the device's outcome, fault, samples out, device time
+  DrainStats drain;               // how the drain ended (completed, cancelled, underrun, fault)
+  std::uint64_t samples = 0;      // samples the producer generated
   double wall_time_s = 0;
-  bool cancelled = false;
+  bool cancelled = false;         // a stop request ended the job
+  std::optional<DeviceFault> fault;  // an underrun or a device fault ended it
+  std::uint64_t stopped_at = 0;   // first sample not engraved as planned (when not completed)
 };
 
 StylusRunResult run_stylus_job(DriveSource& source, const FilterBank* bank,

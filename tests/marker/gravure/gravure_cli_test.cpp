@@ -34,7 +34,7 @@ TEST(GravureCli, JsonHoldsTheJobsFigures) {
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["cells"], 28 * 14);
   EXPECT_EQ(j["samples"], 28 * 14 * 32);
-  EXPECT_NEAR(j["engrave_time_s"].get<double>(), 28 * 14 / 6250.0, 1e-9);
+  EXPECT_NEAR(j["engrave_time_s"].get<double>(), (28 * 14 * 32 + 1) / 200000.0, 1e-9);  // + the safe sample
   EXPECT_EQ(j["screen"]["samples_per_cell"], 32.0);
   const double rms = j["depth_error_um"]["rms"], raw = j["depth_error_unfiltered_um"]["rms"];
   EXPECT_GT(raw / rms, 3);

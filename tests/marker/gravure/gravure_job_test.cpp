@@ -27,7 +27,9 @@ TEST(GravureJob, FilteringCutsTheDepthErrorOfAStepWedgeAndLineWork) {
   EXPECT_EQ(r.layout.cells_per_track, 70u);
   EXPECT_EQ(r.cells, 1960u);
   EXPECT_EQ(r.samples, 1960u * 32);
-  EXPECT_NEAR(r.filtered.run.report.device_time_s, 1960 / 6250.0, 1e-9);
+  // Every sample of the job and the drain's closing safe sample, at 5 µs.
+  EXPECT_EQ(r.filtered.run.report.samples_out, 1960u * 32 + 1);
+  EXPECT_NEAR(r.filtered.run.report.device_time_s, (1960 * 32 + 1) * 5e-6, 1e-9);
   EXPECT_EQ(r.filtered.run.report.outcome, DeviceState::done);
   // Every kind of cell is in the artwork.
   EXPECT_GT(r.counts.white, 0u);
@@ -41,7 +43,7 @@ TEST(GravureJob, FilteringCutsTheDepthErrorOfAStepWedgeAndLineWork) {
   EXPECT_LT(filtered, 1.0);  // µm rms against cells up to 40 µm deep
   EXPECT_GT(raw, 5.0);       // the bare head rings
   EXPECT_LT(r.filtered.cell_error.volume_rms_pct, 0.25 * r.unfiltered->cell_error.volume_rms_pct);
-  EXPECT_EQ(r.engraved_um.size(), r.samples);
+  EXPECT_EQ(r.engraved_um.size(), r.samples + 1);  // + the drain's closing safe sample
   EXPECT_EQ(r.intended_um.size(), r.samples);
 }
 
@@ -69,15 +71,31 @@ TEST(GravureJob, FiltersOffRunsOnceAndReportsNoComparison) {
   EXPECT_GT(r.filtered.depth_error.rms_um, 5);
 }
 
-TEST(GravureJob, CancelLiftsTheStylusAndStops) {
+TEST(GravureJob, AStopLiftsTheStylusAndEndsTheJob) {
   GravureJobSpec spec = wedge_job();
-  int polls = 0;
-  spec.run.cancelled = [&polls] { return ++polls > 2; };
+  spec.run.stop_at = 5000;  // as if Ctrl-C came at sample 5000
   const GravureReport r = run_gravure_job(spec);
   EXPECT_TRUE(r.cancelled);
+  EXPECT_EQ(r.filtered.run.drain.end, DrainEnd::cancelled);
   EXPECT_EQ(r.filtered.run.report.outcome, DeviceState::aborted);
-  EXPECT_LT(r.filtered.run.report.samples_out, r.samples);
+  EXPECT_EQ(r.filtered.run.stopped_at, 5000u);
+  EXPECT_EQ(r.filtered.run.report.samples_out, 5001u);  // and one safe sample
+  // Nothing is cut after the stop, though the job was in the middle of the wedge.
+  ASSERT_EQ(r.engraved_um.size(), 5001u);
+  EXPECT_EQ(r.engraved_um.back(), 0.0f);
   EXPECT_FALSE(r.unfiltered.has_value());
+}
+
+TEST(GravureJob, AJobEndsOnTheLiftedSafeSample) {
+  GravureJobSpec spec;
+  spec.image = GrayImage{28, 28, std::vector<float>(28 * 28, 0.0f)};  // 1 × 1 mm, all black
+  spec.compare_unfiltered = false;
+  const GravureReport r = run_gravure_job(spec);
+  ASSERT_EQ(r.engraved_um.size(), r.samples + 1);
+  // The last cell is black, its channel still in the copper at the job's last sample; the safe
+  // sample after it retracts the head.
+  EXPECT_GT(r.intended_um.back(), 0.0f);
+  EXPECT_EQ(r.engraved_um.back(), 0.0f);
 }
 
 }  // namespace

@@ -27,21 +27,6 @@ std::size_t StylusSampleStream::next(std::span<StylusSample> out) {
   return n;
 }
 
-namespace {
-
-DeviceFault fault_of(std::exception_ptr error, std::uint64_t at) {
-  try {
-    std::rethrow_exception(error);
-  } catch (const DeviceFaultError& e) {
-    return e.fault();
-  } catch (const std::exception& e) {
-    return {FaultCategory::device, e.what(), at};
-  }
-  return {FaultCategory::device, "unknown device error", at};
-}
-
-}  // namespace
-
 StylusRunResult run_stylus_job(DriveSource& source, const FilterBank* bank, SampleDevice<StylusSample>& device,
                                const StylusRunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -63,6 +48,7 @@ StylusRunResult run_stylus_job(DriveSource& source, const FilterBank* bank, Samp
   d.realtime_priority = 0;
   d.stop = options.stop;
   d.stop_at = options.stop_at;
+  d.starve_at = options.starve_at;
   Drain<StylusSample> drain(memory, device, d);
   drain.start();
   std::exception_ptr failure;
@@ -98,7 +84,7 @@ StylusRunResult run_stylus_job(DriveSource& source, const FilterBank* bank, Samp
                                  st.stop_sample};
       break;
     case DrainEnd::device_fault:
-      result.fault = fault_of(drain.error(), st.stop_sample);
+      result.fault = fault_from(drain.error(), st.stop_sample);
       break;
   }
   if (st.end != DrainEnd::completed) result.stopped_at = result.fault ? result.fault->at : st.stop_sample;

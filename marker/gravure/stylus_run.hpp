@@ -47,6 +47,7 @@ struct StylusRunOptions {
   std::string job_name = "gravure";
   const StopFlag* stop = nullptr;         // Ctrl-C, an operator; not owned
   std::uint64_t stop_at = kNever;         // tests: stop as if requested at this sample
+  std::uint64_t starve_at = kNever;       // tests: the memory looks empty from this sample on
 };
 
 struct StylusRunResult {

@@ -4,22 +4,14 @@
 // crash, a sanitizer report, another exception, a broken invariant) is a bug.
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <string_view>
 
 #include "fonts/error.hpp"
+#include "fuzz_check.hpp"
 #include "marker/image/gray_image.hpp"
 
-namespace {
-
-[[noreturn]] void broken(const char* what) {
-  std::fprintf(stderr, "fuzz invariant broken: %s\n", what);
-  std::abort();
-}
-
-}  // namespace
+using mark::fuzz::broken;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);

@@ -37,17 +37,24 @@ nlohmann::json parse_strict(std::string_view text, const std::string& file) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text.begin(), text.end(), cb);
-  } catch (const nlohmann::json::parse_error& e) {
-    std::size_t line = 1, col = 1;
-    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-      if (text[i] == '\n') ++line, col = 1;
-      else ++col;
+  } catch (const nlohmann::json::exception& e) {
+    // A syntax error carries its byte; a number beyond a double (1e999) throws out_of_range,
+    // which does not, so that one is named without a line and column.
+    std::string where = file;
+    if (const auto* pe = dynamic_cast<const nlohmann::json::parse_error*>(&e)) {
+      std::size_t line = 1, col = 1;
+      for (std::size_t i = 0; i + 1 < pe->byte && i < text.size(); ++i) {
+        if (text[i] == '\n') ++line, col = 1;
+        else ++col;
+      }
+      where += ":" + std::to_string(line) + ":" + std::to_string(col);
     }
     std::string what = e.what();
-    const std::size_t colon = what.rfind(": ");
-    if (colon != std::string::npos) what = what.substr(colon + 2);
-    throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(col) +
-                     ": not valid JSON: " + what);
+    // Drop nlohmann's "[json.exception.…] " tag and its "syntax error while parsing … at line 1: " lead.
+    if (const std::size_t colon = what.rfind(": "); colon != std::string::npos) what = what.substr(colon + 2);
+    else if (const std::size_t tag = what.find("] "); what.starts_with('[') && tag != std::string::npos)
+      what = what.substr(tag + 2);
+    throw InputError(where + ": not valid JSON: " + what);
   }
   if (!strict.duplicate.empty())
     throw InputError(file + ": key \"" + strict.duplicate + "\" appears twice in one object");

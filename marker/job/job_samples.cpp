@@ -32,17 +32,6 @@ DrainOptions drain_options(const JobSpec& spec, const JobOptions& options,
   return d;
 }
 
-DeviceFault fault_of(std::exception_ptr error, std::uint64_t at) {
-  try {
-    std::rethrow_exception(error);
-  } catch (const DeviceFaultError& e) {
-    return e.fault();
-  } catch (const std::exception& e) {
-    return {FaultCategory::device, e.what(), at};
-  }
-  return {FaultCategory::device, "unknown device error", at};
-}
-
 }  // namespace
 
 double locus_ink_fraction(const Plan& plan, std::uint64_t samples) {
@@ -128,7 +117,7 @@ void run_samples(const JobSpec& spec, const JobOptions& options, SampleDevice<Sc
         result.outcome = JobOutcome::aborted;
       } else {
         result.outcome = JobOutcome::failed;
-        result.fault = fault_of(drain.error(), d.stop_sample);
+        result.fault = fault_from(drain.error(), d.stop_sample);
       }
       break;
   }

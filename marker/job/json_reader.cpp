@@ -101,7 +101,9 @@ std::optional<double> JsonReader::number(std::string_view key, double lo, double
   if (!v) return std::nullopt;
   if (!v->is_number()) fail(key, std::string("expected a number, found ") + type_name(*v));
   const double d = v->get<double>();
-  const std::string u = unit.empty() ? "" : " " + std::string(unit);
+  // Appended, not " " + unit: GCC 12 warns falsely (-Wrestrict) on that operator+.
+  std::string u;
+  if (!unit.empty()) u.append(" ").append(unit);
   if (!std::isfinite(d) || d < lo || d > hi)
     fail(key, num(d) + u + " is outside " + num(lo) + " to " + num(hi) + u);
   return d;

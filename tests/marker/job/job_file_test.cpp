@@ -107,6 +107,7 @@ TEST(JobFile, MalformedFilesGiveOneLineErrors) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"{", "job.json:1:2: not valid JSON: syntax error while parsing object key - unexpected end of input; expected string literal"},
       {"[]", "job.json: the job: expected an object {…}, found a list"},
+      {"{\"a\": 91e308}", "job.json: not valid JSON: number overflow parsing '91e308'"},
       {"{}", "job.json: format: missing: a job file starts with \"format\": \"marker-job/1\""},
       {with("marker-job/1", "marker-job/2"), "job.json: format: \"marker-job/2\" is not a format this program reads (marker-job/1)"},
       {with("\"pen\": \"deep\"", "\"pen\": \"deeper\""), "job.json: objects[1].pen: no pen named \"deeper\""},

@@ -1,6 +1,6 @@
 #pragma once
 // Writes a dose raster as a greyscale PNG (cairo): dark = high dose on a white background, the
-// used area plus a margin, y up. Throws DeviceError if the file cannot be written.
+// used area plus a margin, y up.
 #include <string>
 
 #include "driver/dose_raster.hpp"
@@ -12,6 +12,12 @@ struct DosePngOptions {
   int max_side_px = 4096;  // larger rasters are downsampled (max over each block) to fit
 };
 
+// The PNG file's bytes; throws DeviceError when the image cannot be made.
+std::string encode_dose_png(const DoseRaster& dose, DosePngOptions options = {});
+
+// Writes encode_dose_png to `path` directly. The command line writes through
+// marker/output/output_file.hpp instead (checked up front, whole or not at all); this stays for
+// `marker mark` until it moves over with the job runner.
 void write_dose_png(const DoseRaster& dose, const std::string& path, DosePngOptions options = {});
 
 }  // namespace mark

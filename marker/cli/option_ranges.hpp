@@ -1,0 +1,52 @@
+#pragma once
+// Every numeric option of `marker` has a documented range. A value outside it is refused with one
+// line naming the option, the value as typed and the range ("--angle: 1e20 is outside the range
+// -360 to 360 degrees"), never clipped or passed on to give a nonsense result. Ranges fixed at
+// build time are checked while the command line is parsed (a CLI11 validator, shown in --help);
+// ranges that depend on other options (--x within the field, --pitch no finer than a motor step)
+// are checked after parsing with the same function and the same wording.
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace mark::cli {
+
+struct Range {
+  double min = 0;
+  double max = 0;
+  std::string unit;           // "mm", "degrees", "mm/s", … (empty for a plain factor)
+  bool above_min = false;     // min itself is excluded: min < v
+  bool zero_means = false;    // 0 is also accepted (a documented "off" or "automatic")
+
+  bool contains(double v) const;
+  // "-360 to 360 degrees", "above 0, up to 50 mm", "0, or 1 to 100000 rpm".
+  std::string text() const;
+};
+
+// Ranges that many options share.
+Range length_range(double min_mm, double max_mm);  // min ≤ v ≤ max, mm
+Range positive_up_to(double max, std::string unit);  // 0 < v ≤ max
+
+// Numbers in messages: as short as exact enough ("1e+20", "0.025", "58.3333").
+std::string format_number(double v);
+
+// Throws InputError "OPTION: VALUE is outside the range RANGE" when v is outside the range or not
+// a finite number. `typed` is the value as the user wrote it (empty: v formatted).
+void check_range(std::string_view option, double v, const Range& range, std::string_view typed = {});
+inline void check_range(std::string_view option, const std::optional<double>& v, const Range& range) {
+  if (v) check_range(option, *v, range);
+}
+
+// Adds a numeric option whose value is checked against `range` while parsing; --help shows the
+// range after the description.
+CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, double& value,
+                               const std::string& description, const Range& range);
+CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, std::optional<double>& value,
+                               const std::string& description, const Range& range);
+
+// The range an option was registered with (for the documentation test); nullopt for an option
+// without one.
+std::optional<std::string> registered_range(const CLI::Option& option);
+
+}  // namespace mark::cli

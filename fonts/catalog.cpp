@@ -63,6 +63,7 @@ std::shared_ptr<const StrokeFont> open_font(const std::string& name, Warnings* w
     if (f.name == name || fs::path(f.path).filename() == wanted) matches.push_back(f);
   if (matches.size() == 1) return std::make_shared<StrokeFont>(load_font_file(matches.front().path, warnings));
   if (matches.size() > 1) {
+    std::sort(matches.begin(), matches.end(), [](const FontFile& a, const FontFile& b) { return a.path < b.path; });
     std::string which;
     for (const FontFile& f : matches) which += (which.empty() ? "" : ", ") + f.path;
     const bool same_file_name = fs::path(matches[0].path).filename() == fs::path(matches[1].path).filename();

@@ -118,5 +118,43 @@ TEST(CliLayout, FontsListsBuiltinAndDebianFonts) {
   EXPECT_NE(r.out.find("standard  lff"), std::string::npos);
 }
 
+// The JSON lists the same fonts as the text, marks names several files share, and every font it
+// calls unique opens by that name.
+TEST(CliLayout, FontsJsonMarksSharedNames) {
+  const Result r = run({"fonts", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_GE(j["fonts"].size(), 1u);
+  EXPECT_EQ(j["fonts"][0]["name"], "builtin");
+  EXPECT_GT(j["fonts"][0]["glyphs"].get<int>(), 90);
+  const Result text = run({"fonts"});
+  EXPECT_EQ(static_cast<std::size_t>(std::count(text.out.begin(), text.out.end(), '\n')), j["fonts"].size());
+  int checked = 0;
+  for (const auto& f : j["fonts"]) {
+    if (f["format"] != "jhf" || checked >= 3) continue;
+    const std::string name = f["name"];
+    const Result open = run({"layout", "H", "--font", name});
+    EXPECT_EQ(open.code, f["unique"].get<bool>() ? 0 : 1) << name << ": " << open.err;
+    ++checked;
+  }
+}
+
+TEST(CliLayout, PreviewJsonDescribesWhatWasDrawn) {
+  const fs::path out = temp_file("described.svg");
+  const Result r = run({"preview", "AB\\nC", "--height", "4", "-o", out.string(), "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["output"], out.string());
+  EXPECT_EQ(j["text"], "AB\nC");
+  EXPECT_EQ(j["glyphs"], 3);
+  EXPECT_NEAR(j["bounds_mm"]["y_max"].get<double>(), 4.0, 0.2);
+  EXPECT_TRUE(fs::exists(out));
+  // The same figure as `layout --json`: its bounds and its lit length.
+  const Result l = run({"layout", "AB\\nC", "--height", "4", "--json"});
+  const auto fig = nlohmann::json::parse(l.out);
+  EXPECT_DOUBLE_EQ(j["bounds_mm"]["x_min"].get<double>(), fig["bounds"]["min"][0].get<double>());
+  EXPECT_DOUBLE_EQ(j["bounds_mm"]["y_min"].get<double>(), fig["bounds"]["min"][1].get<double>());
+}
+
 }  // namespace
 }  // namespace mark

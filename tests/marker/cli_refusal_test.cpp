@@ -31,10 +31,8 @@ struct Refusal {
 
 // Runs each case with its output files in a fresh folder and checks the folder stays empty.
 void expect_refusals(const std::vector<Refusal>& cases) {
-  const fs::path dir = temp_dir() / "out";
   for (const Refusal& c : cases) {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = test::fresh_temp_dir("marker_cli_refusal_test/out");
     std::vector<std::string> args;
     for (const std::string& a : c.args) args.push_back(a.rfind("OUT/", 0) == 0 ? (dir / a.substr(4)).string() : a);
     const test::CliResult r = test::run_cli(args);

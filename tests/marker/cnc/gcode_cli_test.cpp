@@ -204,14 +204,8 @@ TEST(GcodeCli, ToolMeasureJsonAndTheAnglesAxis) {
   Render rr;
   rr.size = 240;
   const Point c(120.3, 119.6);
-  // A round chip at 30° (y up), 8 px deep: its centre 6 px outside the edge, radius 14 px.
-  const double radius = 92, bite = 14;
-  const Point chip = c + (radius + 6) * Point(std::cos(M_PI / 6), -std::sin(M_PI / 6));
-  const GrayImage img = render(
-      rr, [&](double x, double y) { return (Point(x, y) - c).norm() <= radius && (Point(x, y) - chip).norm() > bite; },
-      [&](double x, double y) {
-        return std::abs((Point(x, y) - c).norm() - radius) < 1.5 || std::abs((Point(x, y) - chip).norm() - bite) < 1.5;
-      });
+  const double radius = 92;
+  const GrayImage img = chipped_disk(rr, c, radius, 30);  // a chip 8 px deep at 30°, y up
   const std::string image = write_png(img, "chipped_json");
   const CliResult j = run_cli({"tool-measure", image, "--pixel-size", "5", "--nominal-diameter", "1", "--json"});
   ASSERT_EQ(j.code, 0) << j.err;

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "../cli_runner.hpp"
 #include "fonts/error.hpp"
 
 namespace mark {
@@ -20,12 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir() {
-  const fs::path d = fs::temp_directory_path() / "marker_output_file_test";
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path fresh_dir() { return test::fresh_temp_dir("marker_output_file_test"); }
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

@@ -3,14 +3,14 @@
 # $MARKER_FUZZ_BUILD) and runs each for SECONDS (default 20). Exits non-zero, naming the crashing
 # input, if any target finds a crash, a sanitizer report, a leak or a broken invariant.
 #   scripts/fuzz.sh [SECONDS]
-# Targets: the font loaders (jhf, lff, cxf), the built-in font's glyph script, the PGM reader of
-# tool-measure and the option-value parsers (numbers, "CX,CY,R", "WxH").
+# Targets: the font loaders (jhf, lff, cxf), job files, the built-in font's glyph script, the PGM
+# reader of tool-measure and the option-value parsers (numbers, "CX,CY,R", "WxH").
 set -euo pipefail
 
 seconds=${1:-20}
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${MARKER_FUZZ_BUILD:-$root/build-fuzz}
-targets=(jhf lff cxf glyph_script pgm option_values)
+targets=(jhf lff cxf job glyph_script pgm option_values)
 
 CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DMARKER_FUZZ=ON -DMARKER_TESTS=ON -DMARKER_BENCH=OFF >/dev/null
@@ -25,6 +25,7 @@ declare -A seeds=(
   [glyph_script]="$root/tests/fuzz/seeds/glyph_script/*"
   [pgm]="$root/tests/fuzz/seeds/pgm/*"
   [option_values]="$root/tests/fuzz/seeds/option_values/*"
+  [job]="$root/tests/fuzz/job-seeds/*.json"
 )
 # Option values are short; the others are files.
 declare -A max_len=([option_values]=64 [glyph_script]=1024)

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 
 #include "driver/device_error.hpp"
 
@@ -63,14 +62,6 @@ std::string encode_dose_png(const DoseRaster& dose, DosePngOptions options) {
   if (status != CAIRO_STATUS_SUCCESS)
     throw DeviceError(std::string("dose image: cannot encode (") + cairo_status_to_string(status) + ")");
   return png;
-}
-
-void write_dose_png(const DoseRaster& dose, const std::string& path, DosePngOptions options) {
-  const std::string png = encode_dose_png(dose, options);
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  const bool ok = f && std::fwrite(png.data(), 1, png.size(), f) == png.size();
-  if (f && std::fclose(f) != 0) throw DeviceError("dose image " + path + ": cannot write");
-  if (!ok) throw DeviceError("dose image " + path + ": cannot write");
 }
 
 }  // namespace mark

@@ -12,12 +12,8 @@ struct DosePngOptions {
   int max_side_px = 4096;  // larger rasters are downsampled (max over each block) to fit
 };
 
-// The PNG file's bytes; throws DeviceError when the image cannot be made.
+// The PNG file's bytes (the command line writes them through marker/output/output_file.hpp:
+// checked before the job, written whole); throws DeviceError when the image cannot be made.
 std::string encode_dose_png(const DoseRaster& dose, DosePngOptions options = {});
-
-// Writes encode_dose_png to `path` directly. The command line writes through
-// marker/output/output_file.hpp instead (checked up front, whole or not at all); this stays for
-// `marker mark` until it moves over with the job runner.
-void write_dose_png(const DoseRaster& dose, const std::string& path, DosePngOptions options = {});
 
 }  // namespace mark

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -176,11 +175,7 @@ TEST(CliRefusal, AmbiguousFontNamesAreRefused) {
 }
 
 // Every option that takes a number has a range in --help and is checked; the list is the app's.
-// `mark`'s own options move to ranges with the job runner's rework (marker/cli/mark_command.cpp
-// is being rewritten around the device interface); until then they are listed here.
 TEST(CliRefusal, EveryNumericOptionHasARange) {
-  const std::set<std::string> pending = {"mark --speed", "mark --jump-speed", "mark --tick", "mark --run-in",
-                                         "mark --run-out"};
   CLI::App app;
   std::vector<cli::Command> commands = cli::all_commands();
   for (cli::Command& c : commands) c.attach(app);
@@ -190,7 +185,6 @@ TEST(CliRefusal, EveryNumericOptionHasARange) {
       const std::string type = o->get_type_name();
       if (type.rfind("FLOAT", 0) != 0 && type.rfind("INT", 0) != 0 && type.rfind("UINT", 0) != 0) continue;
       ++numeric;
-      if (pending.count(sub->get_name() + " " + o->get_name())) continue;
       EXPECT_TRUE(cli::registered_range(*o).has_value())
           << "marker " << sub->get_name() << " " << o->get_name() << " has no documented range";
     }

@@ -6,25 +6,10 @@
 #include "fonts/error.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
+#include "marker/limits/layout_limits.hpp"
 
 namespace mark::cli {
 namespace {
-
-// The largest field any command takes is a 10 m CNC table; the smallest a 1 mm micro-marking
-// field. Positions and radii stay within the largest field; --x and --y also within --field.
-const Range kFieldRange = length_range(1, 10000);
-const Range kPositionRange = length_range(-10000, 10000);
-const Range kRadiusRange = positive_up_to(10000, "mm");
-// 10 µm letters are below any laser spot; 10 m letters fill the largest field.
-const Range kHeightRange = length_range(0.01, 10000);
-const Range kWidthFactorRange{0.05, 20, ""};
-// Letters that step backwards are refused by the layout (the gap must exceed −advance).
-const Range kGapRange = length_range(-10000, 10000);
-// Below half the font's line height, lines print over each other.
-const Range kLineSpacingRange{0.5, 20, ""};
-const Range kAngleRange{-360, 360, "degrees"};
-// Beyond ±75° the shear slants a letter more than 3.7 times its height sideways.
-const Range kItalicRange{-75, 75, "degrees"};
 
 CircleFit parse_circle(const LayoutArgs& args) {
   const std::string option = "--circle '" + args.circle + "'";

@@ -1,7 +1,7 @@
 #include "marker/cli/option_ranges.hpp"
 
 #include <cmath>
-#include <cstdio>
+#include <type_traits>
 
 #include "fonts/error.hpp"
 #include "marker/cli/option_values.hpp"
@@ -10,10 +10,6 @@ namespace mark::cli {
 namespace {
 
 constexpr std::string_view kRangeTag = " (range: ";
-
-std::string with_unit(const std::string& s, const std::string& unit) {
-  return unit.empty() ? s : s + " " + unit;
-}
 
 CLI::Validator range_validator(const Range& range) {
   CLI::Validator v(
@@ -28,37 +24,29 @@ CLI::Validator range_validator(const Range& range) {
   return v;
 }
 
-template <class T>
+CLI::Validator whole_validator(const WholeRange& range) {
+  return CLI::Validator(
+      [range](std::string& value) -> std::string {
+        const std::optional<long long> n = parse_whole_number(value);
+        if (!n) return "'" + value + "' is not a whole number (range: " + range.text() + ")";
+        if (!range.contains(*n)) return value + " is outside the range " + range.text();
+        return {};
+      },
+      "", "range");
+}
+
+template <class T, class R>
 CLI::Option* add_ranged(CLI::App& app, const std::string& name, T& value,
-                        const std::string& description, const Range& range) {
+                        const std::string& description, const R& range) {
   CLI::Option* o = app.add_option(name, value, description + std::string(kRangeTag) + range.text() + ")");
-  o->check(range_validator(range));
+  if constexpr (std::is_same_v<R, Range>)
+    o->check(range_validator(range));
+  else
+    o->check(whole_validator(range));
   return o;
 }
 
 }  // namespace
-
-bool Range::contains(double v) const {
-  if (!std::isfinite(v)) return false;
-  if (zero_means && v == 0) return true;
-  return (above_min ? v > min : v >= min) && v <= max;
-}
-
-std::string Range::text() const {
-  const std::string span = above_min ? "above " + format_number(min) + ", up to " + format_number(max)
-                                     : format_number(min) + " to " + format_number(max);
-  return (zero_means ? "0, or " : "") + with_unit(span, unit);
-}
-
-Range length_range(double min_mm, double max_mm) { return Range{min_mm, max_mm, "mm"}; }
-
-Range positive_up_to(double max, std::string unit) { return Range{0, max, std::move(unit), true}; }
-
-std::string format_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 void check_range(std::string_view option, double v, const Range& range, std::string_view typed) {
   if (range.contains(v)) return;
@@ -73,6 +61,21 @@ CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, double& v
 
 CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, std::optional<double>& value,
                                const std::string& description, const Range& range) {
+  return add_ranged(app, name, value, description, range);
+}
+
+CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, int& value,
+                               const std::string& description, const WholeRange& range) {
+  return add_ranged(app, name, value, description, range);
+}
+
+CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, long long& value,
+                               const std::string& description, const WholeRange& range) {
+  return add_ranged(app, name, value, description, range);
+}
+
+CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, std::optional<long long>& value,
+                               const std::string& description, const WholeRange& range) {
   return add_ranged(app, name, value, description, range);
 }
 

@@ -10,26 +10,9 @@
 #include <string>
 #include <string_view>
 
+#include "marker/limits/value_range.hpp"
+
 namespace mark::cli {
-
-struct Range {
-  double min = 0;
-  double max = 0;
-  std::string unit;           // "mm", "degrees", "mm/s", … (empty for a plain factor)
-  bool above_min = false;     // min itself is excluded: min < v
-  bool zero_means = false;    // 0 is also accepted (a documented "off" or "automatic")
-
-  bool contains(double v) const;
-  // "-360 to 360 degrees", "above 0, up to 50 mm", "0, or 1 to 100000 rpm".
-  std::string text() const;
-};
-
-// Ranges that many options share.
-Range length_range(double min_mm, double max_mm);  // min ≤ v ≤ max, mm
-Range positive_up_to(double max, std::string unit);  // 0 < v ≤ max
-
-// Numbers in messages: as short as exact enough ("1e+20", "0.025", "58.3333").
-std::string format_number(double v);
 
 // Throws InputError "OPTION: VALUE is outside the range RANGE" when v is outside the range or not
 // a finite number. `typed` is the value as the user wrote it (empty: v formatted).
@@ -44,6 +27,13 @@ CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, double& v
                                const std::string& description, const Range& range);
 CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, std::optional<double>& value,
                                const std::string& description, const Range& range);
+// Whole numbers: the value must be written as one (no fraction, no exponent).
+CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, int& value,
+                               const std::string& description, const WholeRange& range);
+CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, long long& value,
+                               const std::string& description, const WholeRange& range);
+CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, std::optional<long long>& value,
+                               const std::string& description, const WholeRange& range);
 
 // The range an option was registered with (for the documentation test); nullopt for an option
 // without one.

@@ -1,5 +1,6 @@
 #include "marker/cli/option_values.hpp"
 
+#include <charconv>
 #include <cstdlib>
 
 #include "fonts/error.hpp"
@@ -12,6 +13,17 @@ std::optional<double> parse_number(std::string_view text) {
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
   if (end != s.c_str() + s.size()) return std::nullopt;
+  return v;
+}
+
+std::optional<long long> parse_whole_number(std::string_view text) {
+  long long v = 0;
+  const char* begin = text.data();
+  const char* end = text.data() + text.size();
+  if (begin != end && *begin == '+') ++begin;
+  if (begin == end) return std::nullopt;
+  const auto [stop, error] = std::from_chars(begin, end, v);
+  if (error != std::errc() || stop != end) return std::nullopt;
   return v;
 }
 

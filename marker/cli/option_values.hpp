@@ -13,6 +13,10 @@ namespace mark::cli {
 // when it is empty, is not a number or has anything after the number.
 std::optional<double> parse_number(std::string_view text);
 
+// The whole text as a whole number (digits with an optional sign, within 64 bits); nothing for
+// anything else, a fraction or an exponent included.
+std::optional<long long> parse_whole_number(std::string_view text);
+
 // Exactly `count` numbers separated by any one of `separators`. Throws InputError
 // "OPTION 'TEXT': expected FORMAT" for the wrong count and "OPTION 'TEXT': 'PART' is not a number".
 std::vector<double> parse_numbers(std::string_view option, std::string_view text, std::string_view separators,

@@ -19,7 +19,7 @@ namespace {
   std::abort();
 }
 
-void check(double v, const mark::cli::Range& range) {
+void check(double v, const mark::Range& range) {
   try {
     mark::cli::check_range("--fuzz", v, range);
   } catch (const mark::InputError&) {
@@ -33,9 +33,16 @@ void check(double v, const mark::cli::Range& range) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  const mark::cli::Range ranges[] = {{-360, 360, "degrees"}, {0, 1000, "mm", true}, {1, 100000, "rpm", false, true}};
+  const mark::Range ranges[] = {{-360, 360, "degrees"}, {0, 1000, "mm", true}, {1, 100000, "rpm", false, true}};
   if (const auto v = mark::cli::parse_number(text))
     for (const auto& r : ranges) check(*v, r);
+  // A whole number is written with digits and an optional sign only, and means what strtoll says.
+  if (const auto w = mark::cli::parse_whole_number(text)) {
+    const std::size_t first = text[0] == '+' || text[0] == '-' ? 1 : 0;
+    if (text.find_first_not_of("0123456789", first) != std::string::npos)
+      broken("a whole number with more than digits", static_cast<double>(*w));
+    if (std::strtoll(text.c_str(), nullptr, 10) != *w) broken("a whole number read differently", static_cast<double>(*w));
+  }
   for (const auto& [separators, count] : {std::pair<const char*, std::size_t>{",", 3}, {"xX", 2}}) {
     try {
       const auto values = mark::cli::parse_numbers("--fuzz", text, separators, count, "the format");

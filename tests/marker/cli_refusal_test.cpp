@@ -163,6 +163,44 @@ TEST(CliRefusal, PeenPlansThatWouldBeNonsenseOrTooLarge) {
   });
 }
 
+// Refused before anything is fired: nothing printed on stdout, no file.
+TEST(CliRefusal, MarkOptions) {
+  expect_refusals({
+      {{"mark", "X", "--run-in", "-1"}, "--run-in: -1 is outside the range 0 to 10 mm"},
+      {{"mark", "X", "--run-out", "1e300"}, "--run-out: 1e300 is outside the range 0 to 10 mm"},
+      {{"mark", "X", "--tick", "0"}, "--tick: 0 is outside the range 1 to 1000 µs"},
+      {{"mark", "X", "--jump-speed", "1e9"}, "--jump-speed: 1e9 is outside the range 0, or 1 to 100000 mm/s"},
+      {{"mark", "X", "--jump-speed", "50000"},
+       "--jump-speed: 50000 is outside the range 1 to 19200 mm/s (head SL10's positioning limit)"},
+      {{"mark", "X", "--dose-png", "OUT/dose.svg"},
+       "--dose-png '" + (temp_dir() / "out/dose.svg").string() + "': the name must end in .png"},
+      {{"mark", "X", "--preview", "OUT/x.png", "--trace", "/nonexistent-dir/t.csv"},
+       "--trace '/nonexistent-dir/t.csv': directory '/nonexistent-dir': No such file or directory"},
+  });
+}
+
+// `job new` takes the same ranges a job file has (marker/limits/), named by the option.
+TEST(CliRefusal, JobNewAndSerialOptions) {
+  expect_refusals({
+      {{"job", "new", "-o", "OUT/j.json", "--text", "SN {serial}", "--power", "150"},
+       "--power: 150 is outside the range 0 to 100 %"},
+      {{"job", "new", "-o", "OUT/j.json", "--text", "SN {serial}", "--frequency", "0"},
+       "--frequency: 0 is outside the range 0.1 to 10000 kHz"},
+      {{"job", "new", "-o", "OUT/j.json", "--text", "SN {serial}", "--passes", "1.5"},
+       "--passes: '1.5' is not a whole number (range: 1 to 100)"},
+      {{"job", "new", "-o", "OUT/j.json", "--text", "SN {serial}", "--width", "65"},
+       "--width: 65 is outside the range 0 to 64"},
+      {{"job", "new", "-o", "OUT/j.json", "--text", "SN {serial}", "--height", "1e9"},
+       "--height: 1e9 is outside the range 0.01 to 10000 mm"},
+      {{"job", "new", "-o", "OUT/j.txt", "--text", "A"},
+       "--output '" + (temp_dir() / "out/j.txt").string() + "': the name must end in .json"},
+      // Limits that depend on the head are the job file's: the message names the key it wrote.
+      {{"job", "new", "-o", "OUT/j.json", "--text", "A", "--speed", "20000"},
+       (temp_dir() / "out/j.json").string() + ": pens.default.speed_mm_s: 20000 mm/s is outside 0.001 to 19200 mm/s"},
+      {{"serial", "reserve", "sn", "0", "--store", "OUT/s.sqlite"}, "count: 0 is outside the range 1 to 1000000"},
+  });
+}
+
 TEST(CliRefusal, AmbiguousFontNamesAreRefused) {
   if (!fs::exists("/usr/share/hershey-fonts/cursive.jhf") || !fs::exists("/usr/share/librecad/fonts/cursive.lff"))
     GTEST_SKIP() << "needs hershey-fonts-data and librecad-data (scripts/setup.sh)";
@@ -174,21 +212,27 @@ TEST(CliRefusal, AmbiguousFontNamesAreRefused) {
     EXPECT_EQ(test::run_cli({"layout", "X", "--font", name}).code, 0) << name;
 }
 
-// Every option that takes a number has a range in --help and is checked; the list is the app's.
+// Every option that takes a number has a range in --help and is checked; the list is the app's,
+// nested subcommands (job new, serial set) included.
+void count_ranged(const CLI::App& app, const std::string& command, int& numeric) {
+  for (const CLI::Option* o : app.get_options()) {
+    const std::string type = o->get_type_name();
+    if (type.rfind("FLOAT", 0) != 0 && type.rfind("INT", 0) != 0 && type.rfind("UINT", 0) != 0) continue;
+    ++numeric;
+    EXPECT_TRUE(cli::registered_range(*o).has_value())
+        << "marker" << command << " " << o->get_name() << " has no documented range";
+  }
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    count_ranged(*sub, command + " " + sub->get_name(), numeric);
+}
+
 TEST(CliRefusal, EveryNumericOptionHasARange) {
   CLI::App app;
   std::vector<cli::Command> commands = cli::all_commands();
   for (cli::Command& c : commands) c.attach(app);
   int numeric = 0;
-  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
-    for (const CLI::Option* o : sub->get_options()) {
-      const std::string type = o->get_type_name();
-      if (type.rfind("FLOAT", 0) != 0 && type.rfind("INT", 0) != 0 && type.rfind("UINT", 0) != 0) continue;
-      ++numeric;
-      EXPECT_TRUE(cli::registered_range(*o).has_value())
-          << "marker " << sub->get_name() << " " << o->get_name() << " has no documented range";
-    }
-  EXPECT_GT(numeric, 40);
+  count_ranged(app, "", numeric);
+  EXPECT_GT(numeric, 60);
 }
 
 }  // namespace

@@ -27,6 +27,7 @@
 #include "marker/job/auto_speed.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
+#include "marker/limits/pen_limits.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/preview/mark_preview.hpp"
 
@@ -297,14 +298,12 @@ Command make_mark_command() {
                           "jump speed, mm/s (0: half the head's positioning limit; at most the limit)",
                           Range{1, 100000, "mm/s", false, true});
         add_ranged_option(*sub, "--tick", a->tick_us, "locus tick, µs (at most 20 % of the head's τ)",
-                          Range{1, 1000, "µs"})
+                          kTickRange)
             ->capture_default_str();
-        // Extensions longer than a few mm only lengthen the job; 10 mm is far beyond any head's need.
         add_ranged_option(*sub, "--run-in", a->run_in_mm,
-                          "blanking run-in length, mm (default: sized by the head's settling)",
-                          length_range(0, 10));
+                          "blanking run-in length, mm (default: sized by the head's settling)", kExtensionRange);
         add_ranged_option(*sub, "--run-out", a->run_out_mm, "blanking run-out length, mm (default v·τ)",
-                          length_range(0, 10));
+                          kExtensionRange);
         sub->add_option("--preview", a->preview,
                         "write the marked result: dose under the planned path (.png or .svg)");
         sub->add_option("--dose-png", a->dose_png, "write the raw dose raster as a PNG");

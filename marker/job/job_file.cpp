@@ -129,9 +129,9 @@ JobPen parse_pen(JsonReader p, const std::string& name, const HeadModel& head) {
   us("polygon_delay_us", m.polygon_delay_s);
   if (auto v = p.number("jump_settle_um", 0, 1e6, "µm")) m.jump_settle_mm = *v * 1e-3;
   m.blank_angle_deg = p.number("blank_angle_deg", 0, 180, "°").value_or(m.blank_angle_deg);
-  if (auto v = p.number("run_in_mm", 0, 100, "mm")) m.run_in_mm = *v;
-  m.min_run_in_mm = p.number("min_run_in_mm", 0, 100, "mm").value_or(m.min_run_in_mm);
-  m.run_out_mm = p.number("run_out_mm", 0, 100, "mm").value_or(m.run_out_mm);
+  if (auto v = p.number("run_in_mm", kExtensionRange)) m.run_in_mm = *v;
+  m.min_run_in_mm = p.number("min_run_in_mm", kExtensionRange).value_or(m.min_run_in_mm);
+  m.run_out_mm = p.number("run_out_mm", kExtensionRange).value_or(m.run_out_mm);
   if (auto v = p.number("settle_um", 0.001, 1000, "µm")) m.settle_mm = *v * 1e-3;
   m.join_speed_mm_s = p.number("join_speed_mm_s", 0.001, head.max_speed_mm_s, "mm/s").value_or(m.join_speed_mm_s);
   pen.laser.power_pct = p.number("power_pct", kPowerRange).value_or(pen.laser.power_pct);

@@ -14,5 +14,7 @@ inline const WholeRange kPassesRange{1, 100};
 // Marking and jump speeds before the head's own limit is known.
 inline const Range kSpeedRange{0.001, 100000, "mm/s"};
 inline const Range kTickRange{1, 1000, "µs"};
+// Blanking run-ins and run-outs: a few v·τ (under 1 mm at any head's speed); more only costs time.
+inline const Range kExtensionRange = length_range(0, 10);
 
 }  // namespace mark

@@ -24,6 +24,7 @@
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/option_ranges.hpp"
+#include "marker/cli/option_values.hpp"
 #include "marker/job/auto_speed.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
@@ -71,16 +72,11 @@ JobSpec make_spec(const MarkArgs& a) {
   if (a.speed == "auto") {
     speed_mm_s = auto_mark_speed_mm_s(layout_text(spec.text, *spec.font, spec.layout), spec.head);
   } else {
-    std::size_t used = 0;
-    try {
-      speed_mm_s = std::stod(a.speed, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != a.speed.size() || !(speed_mm_s > 0) || !(speed_mm_s <= spec.head.max_speed_mm_s))
-      throw InputError("--speed '" + a.speed + "' must be auto or a speed above 0 and at most " +
-                       std::to_string(static_cast<int>(spec.head.max_speed_mm_s)) +
-                       " mm/s (head " + spec.head.name + ")");
+    const Range speeds = positive_up_to(spec.head.max_speed_mm_s, "mm/s (head " + spec.head.name + "'s positioning limit)");
+    const std::optional<double> v = parse_number(a.speed);
+    if (!v) throw InputError("--speed: '" + a.speed + "' is neither auto nor a number (range: " + speeds.text() + ")");
+    check_range("--speed", *v, speeds, a.speed);
+    speed_mm_s = *v;
   }
   spec.pen = pen_for_head(spec.head, parse_corner_strategy(a.corner), speed_mm_s,
                           a.tick_us * 1e-6);

@@ -17,8 +17,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A folder of the running test's own (CTest runs the tests of this file in parallel processes).
 fs::path temp_dir() {
-  const fs::path d = fs::temp_directory_path() / "marker_cli_refusal_test";
+  const fs::path d = fs::temp_directory_path() / "marker_cli_refusal_test" /
+                     testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::create_directories(d);
   return d;
 }
@@ -31,7 +33,9 @@ struct Refusal {
 // Runs each case with its output files in a fresh folder and checks the folder stays empty.
 void expect_refusals(const std::vector<Refusal>& cases) {
   for (const Refusal& c : cases) {
-    const fs::path dir = test::fresh_temp_dir("marker_cli_refusal_test/out");
+    const fs::path dir = temp_dir() / "out";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
     std::vector<std::string> args;
     for (const std::string& a : c.args) args.push_back(a.rfind("OUT/", 0) == 0 ? (dir / a.substr(4)).string() : a);
     const test::CliResult r = test::run_cli(args);
@@ -169,6 +173,11 @@ TEST(CliRefusal, MarkOptions) {
       {{"mark", "X", "--run-in", "-1"}, "--run-in: -1 is outside the range 0 to 10 mm"},
       {{"mark", "X", "--run-out", "1e300"}, "--run-out: 1e300 is outside the range 0 to 10 mm"},
       {{"mark", "X", "--tick", "0"}, "--tick: 0 is outside the range 1 to 1000 µs"},
+      {{"mark", "X", "--speed", "1e300"},
+       "--speed: 1e300 is outside the range above 0, up to 19200 mm/s (head SL10's positioning limit)"},
+      {{"mark", "X", "--speed", "fast", "--head", "SL14"},
+       "--speed: 'fast' is neither auto nor a number (range: above 0, up to 16000 mm/s (head SL14's positioning "
+       "limit))"},
       {{"mark", "X", "--jump-speed", "1e9"}, "--jump-speed: 1e9 is outside the range 0, or 1 to 100000 mm/s"},
       {{"mark", "X", "--jump-speed", "50000"},
        "--jump-speed: 50000 is outside the range 1 to 19200 mm/s (head SL10's positioning limit)"},

@@ -21,7 +21,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir() { return test::fresh_temp_dir("marker_output_file_test"); }
+// A folder of the running test's own (CTest runs these tests in parallel processes).
+fs::path fresh_dir() {
+  return test::fresh_temp_dir(std::string("marker_output_file_test_") +
+                              testing::UnitTest::GetInstance()->current_test_info()->name());
+}
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

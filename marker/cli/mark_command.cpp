@@ -68,9 +68,14 @@ JobSpec make_spec(const MarkArgs& a) {
   spec.text = unescape_text(a.text);
   spec.layout = to_layout_options(a.layout);
   spec.order = parse_stroke_order(a.order);
+  // Laid out here first so a text leaving the field is refused with what to change (the job
+  // checks it again, with its blanking lines, before the first sample).
+  const Figure figure = layout_text(spec.text, *spec.font, spec.layout);
+  if (!figure.bounds().empty())
+    require_inside(figure.bounds(), Field{spec.head.field_mm}, "the text layout", kFieldRemedy);
   double speed_mm_s = 0;
   if (a.speed == "auto") {
-    speed_mm_s = auto_mark_speed_mm_s(layout_text(spec.text, *spec.font, spec.layout), spec.head);
+    speed_mm_s = auto_mark_speed_mm_s(figure, spec.head);
   } else {
     const Range speeds = positive_up_to(spec.head.max_speed_mm_s, "mm/s (head " + spec.head.name + "'s positioning limit)");
     const std::optional<double> v = parse_number(a.speed);

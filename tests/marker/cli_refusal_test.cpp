@@ -171,6 +171,10 @@ TEST(CliRefusal, PeenPlansThatWouldBeNonsenseOrTooLarge) {
 TEST(CliRefusal, MarkOptions) {
   expect_refusals({
       {{"mark", "X", "--run-in", "-1"}, "--run-in: -1 is outside the range 0 to 10 mm"},
+      {{"mark", "SERIAL 2026-000123", "--height", "8"},
+       "the text layout leaves the field by 49.720 mm at the right: it spans x 0.945 to 104.720 mm, y 0.000 to "
+       "8.000 mm; the field is 110.000 mm square (±55.000 mm); lower --height, move the text with --x, --y or "
+       "--align, or enlarge --field"},
       {{"mark", "X", "--run-out", "1e300"}, "--run-out: 1e300 is outside the range 0 to 10 mm"},
       {{"mark", "X", "--tick", "0"}, "--tick: 0 is outside the range 1 to 1000 µs"},
       {{"mark", "X", "--speed", "1e300"},

@@ -21,7 +21,8 @@ std::optional<long long> parse_whole_number(std::string_view text) {
   const char* begin = text.data();
   const char* end = text.data() + text.size();
   if (begin != end && *begin == '+') ++begin;
-  if (begin == end) return std::nullopt;
+  // One sign at most: from_chars reads a '-' itself, so "+-13" must stop here.
+  if (begin == end || (begin != text.data() && *begin == '-')) return std::nullopt;
   const auto [stop, error] = std::from_chars(begin, end, v);
   if (error != std::errc() || stop != end) return std::nullopt;
   return v;

@@ -10,7 +10,16 @@
 
 namespace mark {
 
-void write_dose_png(const DoseRaster& dose, const std::string& path, DosePngOptions options) {
+namespace {
+
+cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+}  // namespace
+
+std::string encode_dose_png(const DoseRaster& dose, DosePngOptions options) {
   std::int64_t ix0 = 0, iy0 = 0, ix1 = 0, iy1 = 0;
   if (!dose.bounds(ix0, iy0, ix1, iy1)) ix0 = iy0 = ix1 = iy1 = 0;
   const std::int64_t w_px = ix1 - ix0 + 1, h_px = iy1 - iy0 + 1;
@@ -24,8 +33,8 @@ void write_dose_png(const DoseRaster& dose, const std::string& path, DosePngOpti
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
   if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS) {
     cairo_surface_destroy(surface);
-    throw DeviceError("dose image " + path + ": cannot allocate " + std::to_string(w) + "×" +
-                      std::to_string(h) + " pixels");
+    throw DeviceError("dose image: cannot allocate " + std::to_string(w) + "×" + std::to_string(h) +
+                      " pixels");
   }
   cairo_surface_flush(surface);
   unsigned char* data = cairo_image_surface_get_data(surface);
@@ -47,11 +56,12 @@ void write_dose_png(const DoseRaster& dose, const std::string& path, DosePngOpti
     }
   }
   cairo_surface_mark_dirty(surface);
-  const cairo_status_t status = cairo_surface_write_to_png(surface, path.c_str());
+  std::string png;
+  const cairo_status_t status = cairo_surface_write_to_png_stream(surface, append_bytes, &png);
   cairo_surface_destroy(surface);
   if (status != CAIRO_STATUS_SUCCESS)
-    throw DeviceError("dose image " + path + ": cannot write (" +
-                      cairo_status_to_string(status) + ")");
+    throw DeviceError(std::string("dose image: cannot encode (") + cairo_status_to_string(status) + ")");
+  return png;
 }
 
 }  // namespace mark

@@ -48,15 +48,30 @@ std::vector<FontFile> installed_fonts() {
   return out;
 }
 
+bool font_name_is_unique(const std::string& name, const std::vector<FontFile>& fonts) {
+  return std::count_if(fonts.begin(), fonts.end(), [&](const FontFile& f) { return f.name == name; }) == 1;
+}
+
 std::shared_ptr<const StrokeFont> open_font(const std::string& name, Warnings* warnings) {
   if (name == kBuiltinFontName || name.empty())
     return std::shared_ptr<const StrokeFont>(&builtin_font(), [](const StrokeFont*) {});
   std::error_code ec;
   if (fs::is_regular_file(name, ec)) return std::make_shared<StrokeFont>(load_font_file(name, warnings));
   const fs::path wanted(name);
-  for (const FontFile& f : installed_fonts()) {
-    if (f.name == name || fs::path(f.path).filename() == wanted)
-      return std::make_shared<StrokeFont>(load_font_file(f.path, warnings));
+  std::vector<FontFile> matches;
+  for (const FontFile& f : installed_fonts())
+    if (f.name == name || fs::path(f.path).filename() == wanted) matches.push_back(f);
+  if (matches.size() == 1) return std::make_shared<StrokeFont>(load_font_file(matches.front().path, warnings));
+  if (matches.size() > 1) {
+    std::sort(matches.begin(), matches.end(), [](const FontFile& a, const FontFile& b) { return a.path < b.path; });
+    std::string which;
+    for (const FontFile& f : matches) which += (which.empty() ? "" : ", ") + f.path;
+    const bool same_file_name = fs::path(matches[0].path).filename() == fs::path(matches[1].path).filename();
+    throw InputError("font '" + name + "' matches " + std::to_string(matches.size()) + " installed files (" +
+                     which + "); " +
+                     (same_file_name ? "give the path of the one to use"
+                                     : "name it with its extension (" + name + "." + matches[0].format +
+                                           ") or give its path"));
   }
   throw InputError("unknown font '" + name +
                    "': not 'builtin', not a font file, and not an installed font (see 'marker fonts')");

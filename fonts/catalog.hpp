@@ -26,8 +26,13 @@ std::vector<std::string> font_directories();
 // Every font file found in those directories, sorted by name.
 std::vector<FontFile> installed_fonts();
 
+// Whether `name` (a file stem) names exactly one of `fonts`.
+bool font_name_is_unique(const std::string& name, const std::vector<FontFile>& fonts);
+
 // "builtin", a path to a font file, or the name of an installed font ("rowmans", "standard",
-// "rowmans.jhf"). Throws InputError naming the font when nothing matches.
+// "rowmans.jhf"). Throws InputError naming the font when nothing matches, and when the name
+// matches several files (cursive.jhf and cursive.lff): the message lists them, and the name
+// with its extension or the path picks one. Never picks one silently.
 std::shared_ptr<const StrokeFont> open_font(const std::string& name_or_path,
                                             Warnings* warnings = nullptr);
 

@@ -17,7 +17,12 @@ int run(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0 as CLI11 prints them; every real mistake on the command line
+    // (an unknown option, a value outside its range, a missing argument) is one line and exit 1,
+    // like every other refusal.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "marker: " << e.what() << "\n";
+    return 1;
   }
   // Ctrl-C / SIGTERM become a stop request the command polls; a command stopped that way
   // exits 130 with nothing half-done.

@@ -3,24 +3,44 @@
 //  [--feed MM/MIN] [--plunge-feed MM/MIN] [--spindle RPM] [--header LINE]... [--footer LINE]...
 //  [--arc-tolerance MM] [--ellipse-chords] [--m2] [--stroke-width MM] [--margin MM]
 //  [--stepover MM] [--cutter-comp] [--tool-image FILE --pixel-size UM] -o FILE.ngc
-//  [--preview FILE.svg]`: CNC engraving G-code for the same text and fitting as the laser.
+//  [--preview FILE.svg] [--json]`: CNC engraving G-code for the same text and fitting as the laser.
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "fonts/error.hpp"
+#include "fonts/utf8.hpp"
 #include "marker/cli/commands.hpp"
-#include "marker/cli/print.hpp"
 #include "marker/cli/layout_options.hpp"
+#include "marker/cli/option_ranges.hpp"
+#include "marker/cli/print.hpp"
+#include "marker/cli/tool_measure_report.hpp"
 #include "marker/cnc/depression.hpp"
 #include "marker/cnc/gcode_writer.hpp"
+#include "marker/cnc/letter_contacts.hpp"
 #include "marker/cnc/protrusion.hpp"
 #include "marker/cnc/tool/tool_measure.hpp"
 #include "marker/cnc/toolpath_preview.hpp"
+#include "marker/output/output_file.hpp"
 
 namespace mark::cli {
 namespace {
+
+// Engraving cutters run from 0.1 to 12 mm, feeds from a few to a few thousand mm/min; the ranges
+// leave room on both sides and keep every number a controller can be given.
+const Range kToolRange = length_range(0.01, 50);
+const Range kDepthRange = length_range(0.001, 50);
+const Range kDepthPerPassRange{0.001, 50, "mm", false, true};
+const Range kSafeZRange = length_range(0.1, 1000);
+const Range kFeedRange{1, 100000, "mm/min"};
+const Range kSpindleRange{1, 200000, "rpm", false, true};
+// Below 1 µm the tolerance is finer than the program's 4 decimals can write.
+const Range kArcToleranceRange = length_range(0.001, 1);
+const Range kStrokeWidthRange{0.01, 100, "mm", false, true};
+const Range kMarginRange{0.01, 1000, "mm", false, true};
+const Range kStepoverRange{0.001, 25, "mm", false, true};
+// Pocket loops closer than 5 % of the tool diameter only multiply the cutting time.
+constexpr double kMinStepoverShare = 0.05;
 
 struct GcodeArgs {
   std::string text;
@@ -36,91 +56,157 @@ struct GcodeArgs {
   double pixel_size_um = 0;
   std::string output;
   std::string preview;
+  bool json = false;
 };
 
-// Writes next to the target and renames, so a failure never leaves half a program behind.
-void write_file(const std::string& path, const std::string& text) {
-  const std::string temp = path + ".part";
-  {
-    std::ofstream out(temp, std::ios::binary);
-    if (!out) throw InputError("output file '" + path + "': cannot be written");
-    out << text;
-    if (!out) throw InputError("output file '" + path + "': write failed");
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, path, ec);
-  if (ec) throw InputError("output file '" + path + "': " + ec.message());
-}
-
-int run_gcode(GcodeArgs& a) {
-  if (a.mode != "depression" && a.mode != "protrusion")
-    throw InputError("--mode '" + a.mode + "': expected depression or protrusion");
-  a.gcode.dialect = parse_dialect(a.dialect);
-  a.gcode.units = parse_units(a.units);
-  a.gcode.end_with_m30 = !a.m2;
-  const bool protrusion = a.mode == "protrusion";
+// The checks that need more than one option; single values were checked while parsing.
+void check_settings(const GcodeArgs& a, bool protrusion) {
   if (a.protrusion.cutter_comp && !protrusion)
     throw InputError("--cutter-comp: only protrusion walls can be compensated by the control");
   if (a.protrusion.cutter_comp && a.gcode.dialect == Dialect::plain)
     throw InputError("--cutter-comp needs --dialect linuxcnc or fanuc: grbl has no G41/G42");
+  if (a.protrusion.stepover_mm > 0) {
+    const double d = a.cut.tool_diameter_mm;
+    check_range("--stepover", a.protrusion.stepover_mm,
+                Range{kMinStepoverShare * d, d / 2,
+                      "mm (from 5 % of the --tool-diameter to its radius)"});
+  }
+  if (!a.tool_image.empty() && !(a.pixel_size_um > 0))
+    throw InputError("--tool-image needs --pixel-size UM (micrometres per pixel)");
+}
+
+// One warning per line on stderr, and the same text in the JSON.
+void warn(nlohmann::json& warnings, const std::string& text) {
+  std::cerr << "marker: warning: " << text << "\n";
+  warnings.push_back(text);
+}
+
+void warn_touching(const LaidOutText& laid, double stroke_width_mm, nlohmann::json& warnings) {
+  const std::vector<LetterContact> touching = touching_letters(laid.figure, stroke_width_mm);
+  if (touching.empty()) return;
+  const LetterContact& c = touching.front();
+  const std::string a = encode_utf8(laid.figure.glyphs[c.first].code_point);
+  const std::string b = encode_utf8(laid.figure.glyphs[c.second].code_point);
+  std::string text = format("raised letters '%s' and '%s' run into each other at stroke width %g mm "
+                            "(%.4f mm² shared around (%.3f, %.3f) mm)",
+                            a.c_str(), b.c_str(), stroke_width_mm, c.area_mm2, c.at.x(), c.at.y());
+  if (touching.size() > 1) text += format(", and %zu more pairs", touching.size() - 1);
+  warn(warnings, text + "; raise --gap or --height, or lower --stroke-width");
+}
+
+void warn_uncut(const ProtrusionResult& res, nlohmann::json& warnings) {
+  if (res.uncut.empty()) return;
+  double total = 0, largest = 0;
+  const UncutRegion* big = &res.uncut.front();
+  for (const UncutRegion& u : res.uncut) {
+    total += u.area_mm2;
+    if (u.area_mm2 > largest) largest = u.area_mm2, big = &u;
+  }
+  warn(warnings, format("%zu places narrower than the tool stay uncut (%.4f mm² in all, largest %.4f mm² "
+                        "around (%.3f, %.3f) mm)",
+                        res.uncut.size(), total, largest, big->bounds.center().x(), big->bounds.center().y()));
+}
+
+nlohmann::json protrusion_json(const ProtrusionResult& res, bool cutter_comp) {
+  nlohmann::json uncut = nlohmann::json::array();
+  for (const UncutRegion& u : res.uncut)
+    uncut.push_back({{"area_mm2", u.area_mm2}, {"x_mm", u.bounds.center().x()}, {"y_mm", u.bounds.center().y()}});
+  nlohmann::json j = {{"plate_mm",
+                       {{"x_min", res.plate.min.x()}, {"y_min", res.plate.min.y()},
+                        {"x_max", res.plate.max.x()}, {"y_max", res.plate.max.y()}}},
+                      {"stroke_width_mm", res.stroke_width_mm},
+                      {"stepover_mm", res.stepover_mm},
+                      {"pocket_loops", res.loops},
+                      {"uncut", std::move(uncut)}};
+  if (cutter_comp) {
+    j["comp_walls"] = res.comp_walls;
+    j["walls_without_comp"] = res.walls_without_comp;
+  }
+  return j;
+}
+
+int run_gcode(GcodeArgs& a) {
+  a.gcode.dialect = parse_dialect(a.dialect);
+  a.gcode.units = parse_units(a.units);
+  a.gcode.end_with_m30 = !a.m2;
+  const bool protrusion = a.mode == "protrusion";
+  check_settings(a, protrusion);
+  validate(a.gcode);  // header and footer lines against the dialect, before any work
+  check_output_path("--output", a.output);
+  if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
 
   const LaidOutText laid = build_figure(a.text, a.layout);
+  nlohmann::json out = {{"output", a.output},
+                        {"mode", a.mode},
+                        {"dialect", to_string(a.gcode.dialect)},
+                        {"units", a.units == "in" ? "inch" : a.units},
+                        {"text", unescape_text(a.text)},
+                        {"font", a.layout.font},
+                        {"height_mm", a.layout.height_mm}};
+  nlohmann::json warnings = nlohmann::json::array();
   const double nominal = a.cut.tool_diameter_mm;
   if (!a.tool_image.empty()) {
     // Tool form compensation: the measured radius replaces the nominal one in every offset.
-    if (!(a.pixel_size_um > 0)) throw InputError("--tool-image needs --pixel-size UM (micrometres per pixel)");
     ToolMeasureOptions mo;
     mo.pixel_size_um = a.pixel_size_um;
     mo.nominal_diameter_mm = nominal;
     const ToolMeasurement m = measure_tool(read_gray_image(a.tool_image), mo, a.tool_image);
-    print("tool: measured diameter %.4f mm (nominal %.4f mm), form deviation %.4f mm\n", m.diameter_mm,
-          nominal, m.form_deviation_mm);
+    out["tool_measured"] = tool_measurement_json(m, mo);
+    if (!a.json)
+      std::cout << format("tool: measured diameter %.4f mm (nominal %.4f mm), form deviation %.4f mm\n",
+                          m.diameter_mm, nominal, m.form_deviation_mm);
     a.cut.tool_diameter_mm = m.diameter_mm;
     // The letters keep the width they were designed with: the nominal tool's.
     if (!(a.protrusion.stroke_width_mm > 0)) a.protrusion.stroke_width_mm = nominal;
   }
-  if (a.gcode.title.empty()) a.gcode.title = "marker " + a.mode + ": " + a.text;
+  out["tool_diameter_mm"] = a.cut.tool_diameter_mm;
+  // The title carries the text line by line; the writer wraps it to the dialect's line length.
+  if (a.gcode.title.empty()) a.gcode.title = "marker " + a.mode + ": " + unescape_text(a.text);
 
   Toolpath tp;
   ProtrusionResult res;
   if (protrusion) {
     res = protrusion_toolpath(laid.figure, a.cut, a.protrusion);
     tp = res.toolpath;
+    warn_touching(laid, res.stroke_width_mm, warnings);
+    warn_uncut(res, warnings);
+    out["protrusion"] = protrusion_json(res, a.protrusion.cutter_comp);
   } else {
     tp = depression_toolpath(laid.figure, a.cut);
   }
   GcodeStats st;
   const std::string program = write_gcode(tp, a.gcode, &st);
-  write_file(a.output, program);
-  print("%s: %zu lines, %zu rapid, %zu feed, %zu arc moves; %zu subprograms, %zu calls, %zu inlined\n",
-        a.output.c_str(), st.lines, st.rapids, st.feeds, st.arcs, tp.subs.size(), st.calls, st.inlined);
-  if (protrusion) {
-    print("plate %.3f x %.3f mm at (%.3f, %.3f); %zu pocket loops per pass, step-over %.3f mm\n",
-          res.plate.width(), res.plate.height(), res.plate.min.x(), res.plate.min.y(), res.loops,
-          res.stepover_mm);
-    if (a.protrusion.cutter_comp)
-      print("cutter compensation: %zu walls under G41, %zu without room for a lead move cut as tool-centre loops\n",
-            res.comp_walls, res.walls_without_comp);
-    if (!res.uncut.empty()) {
-      double total = 0, largest = 0;
-      const UncutRegion* big = &res.uncut.front();
-      for (const UncutRegion& u : res.uncut) {
-        total += u.area_mm2;
-        if (u.area_mm2 > largest) largest = u.area_mm2, big = &u;
-      }
-      std::cerr << "marker: warning: ";
-      char line[256];
-      std::snprintf(line, sizeof line,
-                    "%zu places narrower than the tool stay uncut (%.4f mm² in all, largest %.4f mm² "
-                    "around (%.3f, %.3f) mm)\n",
-                    res.uncut.size(), total, largest, big->bounds.center().x(), big->bounds.center().y());
-      std::cerr << line;
-    }
-  }
-  if (!a.preview.empty()) {
+  write_file_whole(a.output, program);
+  if (!a.preview.empty())
     write_toolpath_preview(laid.figure, tp, a.cut.tool_diameter_mm, protrusion ? &res : nullptr, a.preview);
-    print("preview: %s\n", a.preview.c_str());
+
+  out["lines"] = st.lines;
+  out["rapid_moves"] = st.rapids;
+  out["feed_moves"] = st.feeds;
+  out["arc_moves"] = st.arcs;
+  out["subprograms"] = tp.subs.size();
+  out["calls"] = st.calls;
+  out["inlined"] = st.inlined;
+  out["max_arc_radius_error_mm"] = st.max_arc_radius_error_mm;
+  out["preview"] = a.preview.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.preview);
+  out["warnings"] = warnings;
+  if (a.json) {
+    std::cout << out.dump(2) << "\n";
+    return 0;
   }
+  std::cout << format("%s: %zu lines, %zu rapid, %zu feed, %zu arc moves; %zu subprograms, %zu calls, %zu inlined\n",
+                      a.output.c_str(), st.lines, st.rapids, st.feeds, st.arcs, tp.subs.size(), st.calls,
+                      st.inlined);
+  if (protrusion) {
+    std::cout << format("plate %.3f x %.3f mm at (%.3f, %.3f); %zu pocket loops per pass, step-over %.3f mm\n",
+                        res.plate.width(), res.plate.height(), res.plate.min.x(), res.plate.min.y(), res.loops,
+                        res.stepover_mm);
+    if (a.protrusion.cutter_comp)
+      std::cout << format("cutter compensation: %zu walls under G41, %zu without room for a lead move cut as "
+                          "tool-centre loops\n",
+                          res.comp_walls, res.walls_without_comp);
+  }
+  if (!a.preview.empty()) std::cout << "preview: " << a.preview << "\n";
   return 0;
 }
 
@@ -134,38 +220,51 @@ Command make_gcode_command() {
         sub->add_option("text", a->text, "text to engrave (UTF-8; \\n starts a new line)")->required();
         add_layout_options(*sub, a->layout);
         sub->add_option("--mode", a->mode, "depression: tool centre on the strokes; protrusion: pocket around the letters")
+            ->check(CLI::IsMember({"depression", "protrusion"}))
             ->capture_default_str();
-        sub->add_option("--tool-diameter", a->cut.tool_diameter_mm, "cutter diameter, mm")->capture_default_str();
-        sub->add_option("--depth", a->cut.depth_mm, "engraving depth below the surface, mm")->capture_default_str();
-        sub->add_option("--depth-per-pass", a->cut.depth_per_pass_mm, "at most this deep per pass, mm (0: one pass)")
+        add_ranged_option(*sub, "--tool-diameter", a->cut.tool_diameter_mm, "cutter diameter, mm", kToolRange)
             ->capture_default_str();
-        sub->add_option("--safe-z", a->cut.safe_z_mm, "height for rapid moves, mm")->capture_default_str();
-        sub->add_option("--feed", a->cut.feed_mm_min, "cutting feed, mm/min")->capture_default_str();
-        sub->add_option("--plunge-feed", a->cut.plunge_feed_mm_min, "plunge feed, mm/min")->capture_default_str();
-        sub->add_option("--spindle", a->gcode.spindle_rpm, "spindle speed, rpm (0: no M3/M5)")->capture_default_str();
+        add_ranged_option(*sub, "--depth", a->cut.depth_mm, "engraving depth below the surface, mm", kDepthRange)
+            ->capture_default_str();
+        add_ranged_option(*sub, "--depth-per-pass", a->cut.depth_per_pass_mm,
+                          "at most this deep per pass, mm (0: one pass)", kDepthPerPassRange)
+            ->capture_default_str();
+        add_ranged_option(*sub, "--safe-z", a->cut.safe_z_mm, "height for rapid moves, mm", kSafeZRange)
+            ->capture_default_str();
+        add_ranged_option(*sub, "--feed", a->cut.feed_mm_min, "cutting feed, mm/min", kFeedRange)->capture_default_str();
+        add_ranged_option(*sub, "--plunge-feed", a->cut.plunge_feed_mm_min, "plunge feed, mm/min", kFeedRange)
+            ->capture_default_str();
+        add_ranged_option(*sub, "--spindle", a->gcode.spindle_rpm, "spindle speed, rpm (0: no M3/M5)", kSpindleRange)
+            ->capture_default_str();
         sub->add_option("--dialect", a->dialect, "linuxcnc (o-word subprograms), fanuc (O/M98/M99), plain (grbl, inlined)")
             ->capture_default_str();
         sub->add_option("--units", a->units, "output units: mm (G21) or inch (G20)")->capture_default_str();
         sub->add_option("--header", a->gcode.header, "line after the program's modal preamble (repeatable)")->allow_extra_args(false);
         sub->add_option("--footer", a->gcode.footer, "line before the program end (repeatable)")->allow_extra_args(false);
-        sub->add_option("--title", a->gcode.title, "comment at the top of the program");
+        sub->add_option("--title", a->gcode.title, "comment at the top of the program (default: the mode and the text)");
         sub->add_flag("--m2", a->m2, "end with M2 instead of M30");
-        sub->add_option("--arc-tolerance", a->cut.arcs.tolerance_mm,
-                        "how far arc splines of elliptical arcs may leave the curve, mm")
+        add_ranged_option(*sub, "--arc-tolerance", a->cut.arcs.tolerance_mm,
+                          "how far arc splines of elliptical arcs may leave the curve, mm", kArcToleranceRange)
             ->capture_default_str();
         sub->add_flag("--ellipse-chords", a->cut.arcs.ellipse_chords, "cut elliptical arcs as G01 chords instead of biarcs");
-        sub->add_option("--stroke-width", a->protrusion.stroke_width_mm, "protrusion: width of the raised strokes, mm (0: tool diameter)")
+        add_ranged_option(*sub, "--stroke-width", a->protrusion.stroke_width_mm,
+                          "protrusion: width of the raised strokes, mm (0: tool diameter)", kStrokeWidthRange)
             ->capture_default_str();
-        sub->add_option("--margin", a->protrusion.margin_mm, "protrusion: letters to boundary rectangle, mm (0: 2 × tool diameter)")
+        add_ranged_option(*sub, "--margin", a->protrusion.margin_mm,
+                          "protrusion: letters to boundary rectangle, mm (0: 2 × tool diameter)", kMarginRange)
             ->capture_default_str();
-        sub->add_option("--stepover", a->protrusion.stepover_mm, "protrusion: between pocket loops, mm (0: 40 % of the tool diameter)")
+        add_ranged_option(*sub, "--stepover", a->protrusion.stepover_mm,
+                          "protrusion: between pocket loops, mm (0: 40 % of the tool diameter; else 5 % of the "
+                          "diameter to its radius)",
+                          kStepoverRange)
             ->capture_default_str();
         sub->add_flag("--cutter-comp", a->protrusion.cutter_comp,
                       "protrusion: program the walls as part contours with G41 and the tool diameter in D");
         sub->add_option("--tool-image", a->tool_image, "shadow image of the tool (PNG or PGM): its measured diameter replaces --tool-diameter in the offsets");
-        sub->add_option("--pixel-size", a->pixel_size_um, "tool image: micrometres per pixel");
+        add_ranged_option(*sub, "--pixel-size", a->pixel_size_um, "tool image: micrometres per pixel", kPixelSizeRange);
         sub->add_option("-o,--output", a->output, "G-code file to write")->required();
         sub->add_option("--preview", a->preview, "draw the toolpath to FILE.svg or FILE.png");
+        sub->add_flag("--json", a->json, "print the result as one JSON object (docs/json.md)");
         return sub;
       },
       [a] { return run_gcode(*a); });

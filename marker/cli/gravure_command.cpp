@@ -15,11 +15,12 @@
 #include "marker/cli/print.hpp"
 #include "marker/cli/gravure_options.hpp"
 #include "marker/cli/interrupt.hpp"
+#include "marker/cli/option_ranges.hpp"
 #include "marker/gravure/gravure_job.hpp"
 #include "marker/gravure/gravure_json.hpp"
 #include "marker/gravure/gravure_preview.hpp"
 #include "marker/gravure/head_design.hpp"
-#include "marker/gravure/parameter_range.hpp"
+#include "marker/limits/gravure_limits.hpp"
 
 namespace mark::cli {
 namespace {
@@ -28,7 +29,7 @@ struct GravureArgs {
   std::string image;
   std::string mask;
   std::string screen = "70";
-  double cell_rate_hz = 6250;
+  int cell_rate_hz = 6250;
   double resolution = 0;
   bool stagger = false;
   GravureSetup setup;
@@ -46,37 +47,17 @@ struct GravureArgs {
   std::string preview;
 };
 
-void check_setup(const CellSetup& s, const std::string& prefix) {
-  check_range("--" + prefix + "-depth", s.full_cell_depth_um, kCellDepthRange);
-  check_range("--" + prefix + "-channel", s.channel_depth_um, kChannelDepthRange);
-  check_range("--" + prefix + "-gain", s.gain, kSetupGainRange);
-  check_range("--" + prefix + "-offset", s.offset_um, kSetupOffsetRange);
-}
-
 GravureJobSpec make_spec(const GravureArgs& a) {
   GravureJobSpec spec;
   parse_screen("--screen", a.screen, spec.screen);
-  check_range("--cell-rate", a.cell_rate_hz, kCellRateRange);
-  if (a.cell_rate_hz != std::floor(a.cell_rate_hz)) {
-    char msg[96];
-    std::snprintf(msg, sizeof msg, "--cell-rate %g: must be a whole number of hertz", a.cell_rate_hz);
-    throw InputError(msg);
-  }
   spec.screen.cell_rate_hz = static_cast<std::uint32_t>(a.cell_rate_hz);
   spec.screen.stagger = a.stagger;
-  if (a.resolution != 0) check_range("--resolution", a.resolution, kResolutionRange);
   spec.px_per_mm = a.resolution;
-  check_setup(a.setup.ct, "ct");
-  check_setup(a.setup.lw, "lw");
-  check_range("--lift", a.setup.lift_um, kLiftRange);
   spec.setup = a.setup;
-  check_range("--stylus-angle", a.stylus_angle_deg, kStylusAngleRange);
   spec.stylus_angle_deg = a.stylus_angle_deg;
   if (!a.head.empty()) spec.head.head = parse_head("--head", a.head);
   if (!a.nominal_head.empty()) spec.nominal_head = parse_head("--nominal-head", a.nominal_head);
-  check_range("--sense-noise", a.sense_noise_um, kSenseNoiseRange);
   spec.head.sense_noise_um = a.sense_noise_um;
-  check_range("--target", a.target_hz, {11000, 45000, "Hz"});
   spec.tuning.target.corner_hz = a.target_hz;
 
   const bool manual = !a.notches.empty() || !a.emphasis.empty();
@@ -137,13 +118,14 @@ int run_gravure(const GravureArgs& a) {
 
 void add_setup_options(CLI::App& sub, CellSetup& s, const std::string& prefix, const std::string& name) {
   const std::string g = name + " setup";
-  sub.add_option("--" + prefix + "-depth", s.full_cell_depth_um, name + " full-cell depth (100 % cell), µm")
+  add_ranged_option(sub, "--" + prefix + "-depth", s.full_cell_depth_um, name + " full-cell depth (100 % cell), µm",
+                    kCellDepthRange)->capture_default_str()->group(g);
+  add_ranged_option(sub, "--" + prefix + "-channel", s.channel_depth_um,
+                    name + " channel depth between 100 % cells, µm", kChannelDepthRange)->capture_default_str()->group(g);
+  add_ranged_option(sub, "--" + prefix + "-gain", s.gain, name + " gain on the density", kSetupGainRange)
       ->capture_default_str()->group(g);
-  sub.add_option("--" + prefix + "-channel", s.channel_depth_um, name + " channel depth between 100 % cells, µm")
-      ->capture_default_str()->group(g);
-  sub.add_option("--" + prefix + "-gain", s.gain, name + " gain on the density")->capture_default_str()->group(g);
-  sub.add_option("--" + prefix + "-offset", s.offset_um, name + " offset added to every depth, µm")
-      ->capture_default_str()->group(g);
+  add_ranged_option(sub, "--" + prefix + "-offset", s.offset_um, name + " offset added to every depth, µm",
+                    kSetupOffsetRange)->capture_default_str()->group(g);
 }
 
 }  // namespace
@@ -156,22 +138,30 @@ Command make_gravure_command() {
         sub->add_option("image", a->image, "8-bit grey image, PNG or PGM (white 0 % … black 100 % density)")->required();
         sub->add_option("--mask", a->mask, "line-work mask of the same size: dark pixels are line-work (LW)");
         sub->add_option("--screen", a->screen, "screen in lines/cm: ALONG or ALONGxACROSS")->capture_default_str();
-        sub->add_option("--cell-rate", a->cell_rate_hz, "cells engraved per second, Hz")->capture_default_str();
-        sub->add_option("--resolution", a->resolution, "image pixels per mm (default: 4 a cell along the track)");
+        add_ranged_option(*sub, "--cell-rate", a->cell_rate_hz, "cells engraved per second, Hz",
+                          WholeRange{static_cast<std::int64_t>(kCellRateRange.min),
+                                     static_cast<std::int64_t>(kCellRateRange.max)})
+            ->capture_default_str();
+        add_ranged_option(*sub, "--resolution", a->resolution, "image pixels per mm (0: 4 a cell along the track)",
+                          Range{kResolutionRange.min, kResolutionRange.max, kResolutionRange.unit, false, true});
         sub->add_flag("--stagger", a->stagger, "offset odd tracks by half a cell");
         add_setup_options(*sub, a->setup.ct, "ct", "CT");
         add_setup_options(*sub, a->setup.lw, "lw", "LW");
-        sub->add_option("--lift", a->setup.lift_um, "stylus height above the surface over white, µm")->capture_default_str();
-        sub->add_option("--stylus-angle", a->stylus_angle_deg, "diamond's included angle, degrees")->capture_default_str();
+        add_ranged_option(*sub, "--lift", a->setup.lift_um, "stylus height above the surface over white, µm", kLiftRange)
+            ->capture_default_str();
+        add_ranged_option(*sub, "--stylus-angle", a->stylus_angle_deg, "diamond's included angle, degrees",
+                          kStylusAngleRange)->capture_default_str();
         const std::string head = "Head and filters";
         sub->add_option("--head", a->head, "the simulated head's resonances FREQ_HZ:DAMPING:GAIN,... (default 1800:0.06:0.8,5500:0.04:0.2)")->group(head);
         sub->add_option("--nominal-head", a->nominal_head, "the head model the default filters are designed for (default: the typical head)")->group(head);
-        sub->add_option("--sense-noise", a->sense_noise_um, "sensing coil noise, µm rms")->capture_default_str()->group(head);
+        add_ranged_option(*sub, "--sense-noise", a->sense_noise_um, "sensing coil noise, µm rms", kSenseNoiseRange)
+            ->capture_default_str()->group(head);
         sub->add_option("--tune", a->tune, "filters: auto (measure and fit the head), nominal (designed for --nominal-head), off")
             ->capture_default_str()->group(head);
         sub->add_option("--notch", a->notches, "a notch filter by hand, FREQ_HZ:DAMPING:DEPTH_DB (repeatable)")->group(head);
         sub->add_option("--emphasis", a->emphasis, "the emphasis filter by hand, FREQ_HZ:DAMPING:CORNER_HZ:CORNER_DAMPING")->group(head);
-        sub->add_option("--target", a->target_hz, "corner of the flat target response, Hz")->capture_default_str()->group(head);
+        add_ranged_option(*sub, "--target", a->target_hz, "corner of the flat target response, Hz", kTargetCornerRange)
+            ->capture_default_str()->group(head);
         sub->add_flag("--real-time", a->real_time, "drain at the stylus clock (default: virtual time, as fast as possible)");
         sub->add_flag("--no-compare", a->no_compare, "skip the engraving without filters");
         sub->add_flag("--json", a->json, "print one JSON object with the job's figures");

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "fonts/error.hpp"
-#include "marker/gravure/parameter_range.hpp"
+#include "marker/limits/gravure_limits.hpp"
 
 namespace mark::cli {
 namespace {
@@ -44,7 +44,7 @@ std::vector<double> numbers(const std::string& option, const std::string& text, 
 
 void parse_screen(const std::string& option, const std::string& text, GravureScreen& screen) {
   const std::vector<double> v = numbers(option, text, 'x', 1, 2, "LINES_PER_CM or ALONGxACROSS, e.g. 70 or 70x60");
-  const ParameterRange lines{kCellsPerMmRange.lo * 10, kCellsPerMmRange.hi * 10, "lines/cm"};
+  const Range lines{kCellsPerMmRange.min * 10, kCellsPerMmRange.max * 10, "lines/cm"};
   check_range(option + " along", v[0], lines);
   const double across = v.size() == 2 ? v[1] : v[0];
   check_range(option + " across", across, lines);
@@ -71,7 +71,7 @@ StylusHeadModel parse_head(const std::string& option, const std::string& text) {
 FilterSection parse_notch(const std::string& option, const std::string& text) {
   const std::vector<double> v = numbers(option, text, ':', 3, 3, "FREQ_HZ:DAMPING:DEPTH_DB, e.g. 1800:0.06:18");
   check_range(option + " frequency", v[0], kFilterFrequencyRange);
-  check_range(option + " damping", v[1], {kPoleDampingRange.lo, 1, ""});
+  check_range(option + " damping", v[1], {kPoleDampingRange.min, 1, ""});
   check_range(option + " depth", v[2], kNotchDepthRange);
   const FilterSection s = notch_section(v[0], v[1], v[2]);
   check_range(option + " damping × depth (the notch's pole damping)", s.pole_damping, kPoleDampingRange);

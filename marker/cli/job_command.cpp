@@ -4,15 +4,18 @@
 // `marker job new -o FILE --text TEMPLATE [layout, pen and counter options]`: writes a job file
 // from command-line options, so nobody has to write JSON by hand to start.
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "fonts/error.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/layout_options.hpp"
+#include "marker/cli/option_ranges.hpp"
 #include "marker/cli/production_options.hpp"
 #include "marker/job/part_texts.hpp"
+#include "marker/limits/counter_limits.hpp"
+#include "marker/limits/pen_limits.hpp"
+#include "marker/output/output_file.hpp"
 #include "marker/vars/clock.hpp"
 
 namespace mark::cli {
@@ -91,7 +94,7 @@ int run_check(const CheckArgs& a) {
                               {"frequency_khz", pen.laser.frequency_khz},
                               {"pulse_width_ns", pen.laser.pulse_width_ns},
                               {"passes", pen.passes},
-                              {"pulse_spacing_um", spacing_um}, {"pulse_overlap", overlap}});
+                              {"pulse_spacing_um", spacing_um}, {"pulse_overlap_fraction", overlap}});
   }
   out["planned_time_s"] = total_s;
   if (a.json) {
@@ -111,8 +114,8 @@ int run_check(const CheckArgs& a) {
                 text.c_str(), o["glyphs"].get<int>(), o["strokes"].get<int>(),
                 o["planned_time_s"].get<double>(), o["power_pct"].get<double>(),
                 o["frequency_khz"].get<double>(), o["pulse_spacing_um"].get<double>(),
-                100 * o["pulse_overlap"].get<double>(),
-                o["pulse_overlap"].get<double>() < 0 ? " — separate dots" : "");
+                100 * o["pulse_overlap_fraction"].get<double>(),
+                o["pulse_overlap_fraction"].get<double>() < 0 ? " — separate dots" : "");
   }
   for (const auto& [name, value] : serials) std::printf("  counter %s starts at %lld\n", name.c_str(), static_cast<long long>(value));
   for (const std::string& v : job.required_variables())
@@ -189,19 +192,12 @@ nlohmann::ordered_json new_job_json(const NewArgs& a) {
 }
 
 int run_new(const NewArgs& a) {
+  check_output_path("--output", a.output, {".json"});
   if (std::filesystem::exists(a.output) && !a.force)
     throw InputError(a.output + " exists; give --force to replace it");
   const std::string text = new_job_json(a).dump(2) + "\n";
   parse_job(text, a.output);  // what we write must read back: the same checks as any job file
-  // Written to a temporary name and renamed, so a reader never sees half a job.
-  const std::string tmp = a.output + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) throw InputError(a.output + ": cannot write the job file");
-  }
-  std::filesystem::rename(tmp, a.output);
+  write_file_whole(a.output, text);  // a reader never sees half a job
   std::printf("wrote %s\n", a.output.c_str());
   return 0;
 }
@@ -227,24 +223,34 @@ Command make_job_command() {
         n->add_option("--name", a.object, "the object's name")->capture_default_str();
         add_layout_options(*n, a.layout);
         n->add_option("--head", a.head, "scan head: SL10, SL14, cheap")->capture_default_str();
-        n->add_option("--spot", a.spot_um, "focused spot diameter, µm")->capture_default_str();
+        add_ranged_option(*n, "--spot", a.spot_um, "focused spot diameter, µm", kSpotRange)->capture_default_str();
         n->add_option("--pen", a.pen, "the pen's name")->capture_default_str();
         n->add_option("--corner", a.corner, "corner strategy: blanking, delays, none")->capture_default_str();
-        n->add_option("--speed", a.speed_mm_s, "marking speed, mm/s")->capture_default_str();
-        n->add_option("--jump-speed", a.jump_speed_mm_s, "jump speed, mm/s (default: the head's)");
-        n->add_option("--tick", a.tick_us, "locus tick, µs (default 10)");
-        n->add_option("--power", a.power_pct, "laser power, %")->capture_default_str();
-        n->add_option("--frequency", a.frequency_khz, "pulse frequency, kHz")->capture_default_str();
-        n->add_option("--pulse-width", a.pulse_width_ns, "MOPA pulse width, ns (0: the source's default)")->capture_default_str();
-        n->add_option("--passes", a.passes, "times each object is marked")->capture_default_str();
-        n->add_option("--start", a.start, "counters: first value")->capture_default_str();
-        n->add_option("--step", a.step, "counters: step (negative counts down)")->capture_default_str();
-        n->add_option("--width", a.width, "counters: digits (0: as many as needed)")->capture_default_str();
-        n->add_option("--limit", a.limit, "counters: last value");
+        add_ranged_option(*n, "--speed", a.speed_mm_s, "marking speed, mm/s (at most the head's limit)", kSpeedRange)
+            ->capture_default_str();
+        add_ranged_option(*n, "--jump-speed", a.jump_speed_mm_s,
+                          "jump speed, mm/s (default: the head's; at most its limit)", kSpeedRange);
+        add_ranged_option(*n, "--tick", a.tick_us, "locus tick, µs (default 10; at most 20 % of the head's τ)",
+                          kTickRange);
+        add_ranged_option(*n, "--power", a.power_pct, "laser power, %", kPowerRange)->capture_default_str();
+        add_ranged_option(*n, "--frequency", a.frequency_khz, "pulse frequency, kHz", kFrequencyRange)
+            ->capture_default_str();
+        add_ranged_option(*n, "--pulse-width", a.pulse_width_ns, "MOPA pulse width, ns (0: the source's default)",
+                          kPulseWidthRange)
+            ->capture_default_str();
+        add_ranged_option(*n, "--passes", a.passes, "times each object is marked", kPassesRange)->capture_default_str();
+        add_ranged_option(*n, "--start", a.start, "counters: first value", kCounterValueRange)->capture_default_str();
+        add_ranged_option(*n, "--step", a.step, "counters: step (negative counts down)", kCounterStepRange)
+            ->capture_default_str();
+        add_ranged_option(*n, "--width", a.width, "counters: digits (0: as many as needed)", kCounterWidthRange)
+            ->capture_default_str();
+        add_ranged_option(*n, "--limit", a.limit, "counters: last value", kCounterValueRange);
         n->add_option("--at-limit", a.at_limit, "counters: stop or wrap")->capture_default_str();
         n->add_option("--alphabet", a.alphabet, "counters: decimal, hex, base36, base33")->capture_default_str();
         n->add_option("--padding", a.padding, "counters: keep, suppress, blank")->capture_default_str();
-        n->add_option("--marks-per-serial", a.marks_per_serial, "counters: parts per value")->capture_default_str();
+        add_ranged_option(*n, "--marks-per-serial", a.marks_per_serial, "counters: parts per value",
+                          kMarksPerSerialRange)
+            ->capture_default_str();
         n->add_option("--reset", a.reset, "counters: never, midnight, shift")->capture_default_str();
         n->add_option("--time-zone", a.time_zone, "dates, shifts and resets: local, UTC or e.g. Europe/Berlin")->capture_default_str();
         n->add_option("--shifts", a.shifts, "shift codes and start times: A=06:00,B=14:00,C=22:00");

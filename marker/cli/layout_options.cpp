@@ -1,32 +1,23 @@
 #include "marker/cli/layout_options.hpp"
 
-#include <charconv>
 #include <iostream>
 
 #include "fonts/catalog.hpp"
 #include "fonts/error.hpp"
+#include "marker/cli/option_ranges.hpp"
+#include "marker/cli/option_values.hpp"
+#include "marker/limits/layout_limits.hpp"
 
 namespace mark::cli {
 namespace {
 
 CircleFit parse_circle(const LayoutArgs& args) {
+  const std::string option = "--circle '" + args.circle + "'";
+  const std::vector<double> v = parse_numbers("--circle", args.circle, ",", 3, "CX,CY,R in millimetres");
+  check_range(option + " centre x", v[0], kPositionRange);
+  check_range(option + " centre y", v[1], kPositionRange);
+  check_range(option + " radius", v[2], kRadiusRange);
   CircleFit fit;
-  double v[3];
-  const std::string& s = args.circle;
-  std::size_t pos = 0;
-  for (int i = 0; i < 3; ++i) {
-    const std::size_t end = i < 2 ? s.find(',', pos) : s.size();
-    if (end == std::string::npos)
-      throw InputError("--circle '" + s + "': expected CX,CY,R in millimetres");
-    try {
-      std::size_t used = 0;
-      v[i] = std::stod(s.substr(pos, end - pos), &used);
-      if (used != end - pos) throw std::invalid_argument("trailing");
-    } catch (const std::exception&) {
-      throw InputError("--circle '" + s + "': '" + s.substr(pos, end - pos) + "' is not a number");
-    }
-    pos = end + 1;
-  }
   fit.center = Point(v[0], v[1]);
   fit.radius_mm = v[2];
   fit.inside = args.inside;
@@ -53,19 +44,29 @@ std::string unescape_text(const std::string& text) {
 void add_layout_options(CLI::App& app, LayoutArgs& a) {
   app.add_option("--font", a.font, "font: 'builtin', an installed font name (see 'marker fonts') or a .jhf/.lff/.cxf file")
       ->capture_default_str();
-  app.add_option("--height", a.height_mm, "character (cap) height, mm")->capture_default_str();
-  app.add_option("--width-factor", a.width_factor, "horizontal scale of the letters")->capture_default_str();
-  app.add_option("--gap", a.gap_mm, "extra gap between letters, mm")->capture_default_str();
-  app.add_option("--line-spacing", a.line_spacing, "factor on the font's line height")->capture_default_str();
+  add_ranged_option(app, "--height", a.height_mm, "character (cap) height, mm", kHeightRange)
+      ->capture_default_str();
+  add_ranged_option(app, "--width-factor", a.width_factor, "horizontal scale of the letters", kWidthFactorRange)
+      ->capture_default_str();
+  add_ranged_option(app, "--gap", a.gap_mm, "extra gap between letters, mm (at least -height/2)", kGapRange)
+      ->capture_default_str();
+  add_ranged_option(app, "--line-spacing", a.line_spacing, "factor on the font's line height", kLineSpacingRange)
+      ->capture_default_str();
   app.add_option("--align", a.align, "alignment of each line about the base point")
       ->check(CLI::IsMember({"left", "center", "right"}))
       ->capture_default_str();
-  app.add_option("--x", a.x_mm, "base point x (field frame, mm)")->capture_default_str();
-  app.add_option("--y", a.y_mm, "base point y (first baseline, mm)")->capture_default_str();
-  app.add_option("--angle", a.angle_deg, "inclined fitting: rotate the text about the base point, degrees")
+  add_ranged_option(app, "--x", a.x_mm, "base point x (field frame, mm; inside the field)", kPositionRange)
       ->capture_default_str();
-  auto* circle = app.add_option("--circle", a.circle, "circular fitting around CX,CY with radius R (mm)");
-  auto* start = app.add_option("--start-angle", a.start_angle_deg, "circular fitting: angle where the text starts, degrees");
+  add_ranged_option(app, "--y", a.y_mm, "base point y (first baseline, mm; inside the field)", kPositionRange)
+      ->capture_default_str();
+  add_ranged_option(app, "--angle", a.angle_deg, "inclined fitting: rotate the text about the base point, degrees",
+                    kAngleRange)
+      ->capture_default_str();
+  auto* circle = app.add_option("--circle", a.circle,
+                                "circular fitting around CX,CY with radius R (mm; CX, CY " +
+                                    kPositionRange.text() + ", R " + kRadiusRange.text() + ")");
+  auto* start = add_ranged_option(app, "--start-angle", a.start_angle_deg,
+                                  "circular fitting: angle where the text starts, degrees", kAngleRange);
   auto* centred = app.add_flag("--self-centred,--self-centered", a.self_centred,
                                "circular fitting: centre the text on the top (bottom with --inside) of the circle (default)");
   auto* inside = app.add_flag("--inside", a.inside, "circular fitting: letters inside the circle, reading along its bottom");
@@ -73,13 +74,18 @@ void add_layout_options(CLI::App& app, LayoutArgs& a) {
   centred->needs(circle);
   inside->needs(circle);
   start->excludes(centred);
-  app.add_option("--italic", a.italic_deg, "font inclination (shear), degrees")->capture_default_str();
+  add_ranged_option(app, "--italic", a.italic_deg, "font inclination (shear), degrees", kItalicRange)
+      ->capture_default_str();
   app.add_flag("--mirror", a.mirror, "mirror the text (reverse the letter order, mirror each letter)");
   app.add_flag("--replace-missing", a.replace_missing, "draw the font's replacement glyph for characters it lacks");
-  app.add_option("--field", a.field_mm, "field size (square), mm")->capture_default_str();
+  add_ranged_option(app, "--field", a.field_mm, "field size (square), mm", kFieldRange)->capture_default_str();
 }
 
 LayoutOptions to_layout_options(const LayoutArgs& a) {
+  // The base point lies in the field the text is checked against.
+  const Range in_field{-a.field_mm / 2, a.field_mm / 2, "mm (the --field is " + format_number(a.field_mm) + " mm)"};
+  check_range("--x", a.x_mm, in_field);
+  check_range("--y", a.y_mm, in_field);
   LayoutOptions o;
   o.height_mm = a.height_mm;
   o.width_factor = a.width_factor;
@@ -96,7 +102,6 @@ LayoutOptions to_layout_options(const LayoutArgs& a) {
 }
 
 LaidOutText build_figure(const std::string& text, const LayoutArgs& args) {
-  if (!(args.field_mm > 0)) throw InputError("--field must be a positive size in mm");
   Warnings warnings;
   LaidOutText out;
   out.font = open_font(args.font, &warnings);
@@ -104,7 +109,7 @@ LaidOutText build_figure(const std::string& text, const LayoutArgs& args) {
   out.figure = layout_text(unescape_text(text), *out.font, to_layout_options(args));
   out.field = Field{args.field_mm};
   if (out.figure.bounds().empty()) throw InputError("text '" + text + "' has nothing to mark");
-  require_inside(out.figure.bounds(), out.field, "the text layout");
+  require_inside(out.figure.bounds(), out.field, "the text layout", kFieldRemedy);
   return out;
 }
 

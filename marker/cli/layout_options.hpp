@@ -46,6 +46,10 @@ struct LaidOutText {
 // Command-line text: a backslash-n starts a new line, a double backslash is one backslash.
 std::string unescape_text(const std::string& text);
 
+// What to change when a text leaves the field, appended to the layout's message.
+inline constexpr const char* kFieldRemedy =
+    "lower --height, move the text with --x, --y or --align, or enlarge --field";
+
 // Opens the font, lays the text out and refuses an empty text or a layout that leaves the field.
 LaidOutText build_figure(const std::string& text, const LayoutArgs& args);
 

@@ -23,10 +23,13 @@
 #include "marker/cli/inject_option.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
-#include "marker/cli/output_file.hpp"
+#include "marker/cli/option_ranges.hpp"
+#include "marker/cli/option_values.hpp"
 #include "marker/job/auto_speed.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
+#include "marker/limits/pen_limits.hpp"
+#include "marker/output/output_file.hpp"
 #include "marker/preview/mark_preview.hpp"
 
 namespace mark::cli {
@@ -58,7 +61,6 @@ JobSpec make_spec(const MarkArgs& a) {
   const auto head = find_head(a.head);
   if (!head) throw InputError("--head '" + a.head + "' is not one of SL10, SL14, cheap");
   spec.head = *head;
-  if (!(a.layout.field_mm > 0)) throw InputError("--field must be a positive size in mm");
   spec.head.field_mm = a.layout.field_mm;
   Warnings warnings;
   spec.font = open_font(a.layout.font, &warnings);
@@ -66,24 +68,26 @@ JobSpec make_spec(const MarkArgs& a) {
   spec.text = unescape_text(a.text);
   spec.layout = to_layout_options(a.layout);
   spec.order = parse_stroke_order(a.order);
+  // Laid out here first so a text leaving the field is refused with what to change (the job
+  // checks it again, with its blanking lines, before the first sample).
+  const Figure figure = layout_text(spec.text, *spec.font, spec.layout);
+  if (!figure.bounds().empty())
+    require_inside(figure.bounds(), Field{spec.head.field_mm}, "the text layout", kFieldRemedy);
   double speed_mm_s = 0;
   if (a.speed == "auto") {
-    speed_mm_s = auto_mark_speed_mm_s(layout_text(spec.text, *spec.font, spec.layout), spec.head);
+    speed_mm_s = auto_mark_speed_mm_s(figure, spec.head);
   } else {
-    std::size_t used = 0;
-    try {
-      speed_mm_s = std::stod(a.speed, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != a.speed.size() || !(speed_mm_s > 0) || !(speed_mm_s <= spec.head.max_speed_mm_s))
-      throw InputError("--speed '" + a.speed + "' must be auto or a speed above 0 and at most " +
-                       std::to_string(static_cast<int>(spec.head.max_speed_mm_s)) +
-                       " mm/s (head " + spec.head.name + ")");
+    const Range speeds = positive_up_to(spec.head.max_speed_mm_s, "mm/s (head " + spec.head.name + "'s positioning limit)");
+    const std::optional<double> v = parse_number(a.speed);
+    if (!v) throw InputError("--speed: '" + a.speed + "' is neither auto nor a number (range: " + speeds.text() + ")");
+    check_range("--speed", *v, speeds, a.speed);
+    speed_mm_s = *v;
   }
   spec.pen = pen_for_head(spec.head, parse_corner_strategy(a.corner), speed_mm_s,
                           a.tick_us * 1e-6);
   if (a.jump_speed_mm_s != 0) {
+    check_range("--jump-speed", a.jump_speed_mm_s,
+                Range{1, spec.head.max_speed_mm_s, "mm/s (head " + spec.head.name + "'s positioning limit)"});
     spec.pen.jump_speed_mm_s = a.jump_speed_mm_s;
     if (spec.pen.corner == CornerStrategy::blanking) spec.pen.join_speed_mm_s = a.jump_speed_mm_s;
   }
@@ -95,21 +99,21 @@ JobSpec make_spec(const MarkArgs& a) {
 nlohmann::json quality_json(const Quality& q) {
   return {{"max_deviation_um", q.max_deviation_um},
           {"rms_deviation_um", q.rms_deviation_um},
-          {"coverage", q.coverage},
+          {"coverage_fraction", q.coverage},
           {"dose_ratio_max", q.dose_ratio_max},
           {"overshoot_um", q.overshoot_um},
           {"class", to_string(classify(q))}};
 }
 
-nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobResult& r,
-                       const std::string& device_name) {
+nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobOptions& options,
+                       const JobResult& r, const std::string& device_name) {
   nlohmann::json j = {{"text", spec.text},
                       {"font", a.layout.font},
                       {"height_mm", spec.layout.height_mm},
                       {"head", spec.head.name},
                       {"device", device_name},
                       {"outcome", to_string(r.outcome)},
-                      {"ink_marked", r.ink_marked},
+                      {"ink_marked_fraction", r.ink_marked},
                       {"glyphs", r.glyphs},
                       {"strokes", r.strokes},
                       {"commands", r.commands},
@@ -124,6 +128,7 @@ nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobResult& 
                       {"speed_mm_s", spec.pen.mark_speed_mm_s},
                       {"tick_s", spec.pen.tick_s},
                       {"peak_fill_samples", r.drain.peak_fill},
+                      {"line_memory_samples", options.memory_samples},
                       {"lateness_p99_us", r.drain.lateness_p99_us},
                       {"lateness_max_us", r.drain.lateness_max_us},
                       {"realtime", {{"sched_fifo", r.drain.realtime_granted},
@@ -189,18 +194,17 @@ std::function<void(std::uint64_t, std::uint64_t)> progress_printer() {
   };
 }
 
+// One CSV row per sample, written whole (marker/output/output_file.hpp).
 void write_trace(const std::vector<SimTraceRow>& rows, const std::string& path) {
-  write_file_whole(path, [&](const std::string& tmp) {
-    std::FILE* f = std::fopen(tmp.c_str(), "w");
-    if (!f) throw InputError("--trace " + path + ": cannot write: " + std::strerror(errno));
-    std::fputs("t_s,cmd_x_mm,cmd_y_mm,laser,beam_x_mm,beam_y_mm\n", f);
-    for (const SimTraceRow& r : rows)
-      std::fprintf(f, "%.6f,%.5f,%.5f,%d,%.5f,%.5f\n", r.t_s, r.cmd_x_mm, r.cmd_y_mm,
-                   r.laser ? 1 : 0, r.beam_x_mm, r.beam_y_mm);
-    const bool ok = std::ferror(f) == 0;
-    if (std::fclose(f) != 0 || !ok)
-      throw InputError("--trace " + path + ": cannot write: " + std::strerror(errno));
-  });
+  std::string csv = "t_s,cmd_x_mm,cmd_y_mm,laser,beam_x_mm,beam_y_mm\n";
+  csv.reserve(csv.size() + rows.size() * 56);
+  char line[160];
+  for (const SimTraceRow& r : rows) {
+    const int n = std::snprintf(line, sizeof line, "%.6f,%.5f,%.5f,%d,%.5f,%.5f\n", r.t_s, r.cmd_x_mm,
+                                r.cmd_y_mm, r.laser ? 1 : 0, r.beam_x_mm, r.beam_y_mm);
+    csv.append(line, static_cast<std::size_t>(n));
+  }
+  write_file_whole(path, csv);
 }
 
 // --require-quality: the simulator predicts the mark (virtual time, no device touched); below
@@ -227,9 +231,10 @@ void require_quality(const JobSpec& spec, const std::string& name) {
 
 int run_mark(const MarkArgs& a) {
   const JobSpec spec = make_spec(a);
-  for (const auto& [path, option] : {std::pair{a.preview, "--preview"}, {a.dose_png, "--dose-png"},
-                                     {a.trace, "--trace"}})
-    check_output_file(path, option);
+  // Every file the job writes is checked before anything is fired.
+  if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
+  if (!a.dose_png.empty()) check_output_path("--dose-png", a.dose_png, {".png"});
+  if (!a.trace.empty()) check_output_path("--trace", a.trace);
   const InjectArg inject = a.inject.empty() ? InjectArg{} : parse_inject(a.inject);
   if (!a.require_quality.empty()) require_quality(spec, a.require_quality);
 
@@ -248,17 +253,15 @@ int run_mark(const MarkArgs& a) {
   if (!a.json && isatty(STDERR_FILENO)) options.progress = progress_printer();
   const JobResult r =
       scanner ? run_job_simulated(spec, options, *scanner) : run_job(spec, options, *device);
-  if (scanner) {
-    if (!a.preview.empty())
-      write_file_whole(a.preview, [&](const std::string& tmp) {
-        write_mark_preview(r.job.plan, scanner->dose(), tmp);
-      });
-    if (!a.dose_png.empty())
-      write_file_whole(a.dose_png, [&](const std::string& tmp) { write_dose_png(scanner->dose(), tmp); });
+  // A job stopped by Ctrl-C leaves no files: what it would show is not the part on the machine's
+  // table. A failed job's files show how far it got.
+  if (scanner && !interrupt_flag().requested()) {
+    if (!a.preview.empty()) write_mark_preview(r.job.plan, scanner->dose(), a.preview);
+    if (!a.dose_png.empty()) write_file_whole(a.dose_png, encode_dose_png(scanner->dose()));
     if (!a.trace.empty()) write_trace(scanner->trace(), a.trace);
   }
   if (a.json) {
-    std::cout << to_json(a, spec, r, device->describe().name).dump() << "\n";
+    std::cout << to_json(a, spec, options, r, device->describe().name).dump() << "\n";
   } else {
     print_summary(spec, r);
     if (!a.preview.empty()) std::printf("wrote %s\n", a.preview.c_str());
@@ -292,12 +295,16 @@ Command make_mark_command() {
                         "marking speed, mm/s, or auto: the fastest (up to 1000 mm/s) at which the "
                         "head's lag shrinks the tightest curve by at most 8 µm")
             ->capture_default_str();
-        sub->add_option("--jump-speed", a->jump_speed_mm_s,
-                        "jump speed, mm/s (default: half the head's positioning limit)");
-        sub->add_option("--tick", a->tick_us, "locus tick, µs")->capture_default_str();
-        sub->add_option("--run-in", a->run_in_mm,
-                        "blanking run-in length, mm (default: sized by the head's settling)");
-        sub->add_option("--run-out", a->run_out_mm, "blanking run-out length, mm (default v·τ)");
+        add_ranged_option(*sub, "--jump-speed", a->jump_speed_mm_s,
+                          "jump speed, mm/s (0: half the head's positioning limit; at most the limit)",
+                          Range{1, 100000, "mm/s", false, true});
+        add_ranged_option(*sub, "--tick", a->tick_us, "locus tick, µs (at most 20 % of the head's τ)",
+                          kTickRange)
+            ->capture_default_str();
+        add_ranged_option(*sub, "--run-in", a->run_in_mm,
+                          "blanking run-in length, mm (default: sized by the head's settling)", kExtensionRange);
+        add_ranged_option(*sub, "--run-out", a->run_out_mm, "blanking run-out length, mm (default v·τ)",
+                          kExtensionRange);
         sub->add_option("--preview", a->preview,
                         "write the marked result: dose under the planned path (.png or .svg)");
         sub->add_option("--dose-png", a->dose_png, "write the raw dose raster as a PNG");

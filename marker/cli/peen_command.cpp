@@ -1,6 +1,8 @@
 // `marker peen TEXT [--font 5x7|7x9|10x16|builtin|FILE] [layout options] [--planner ...]
 //  [--window WxH] [--pitch MM] [--preview FILE.svg] [--json] [--compare] [-o FILE.csv|FILE.ngc]
 //  [gantry options]`: plans the needle path of a pin marker and times it on the simulated gantry.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -10,6 +12,9 @@
 #include "marker/cli/print.hpp"
 #include "marker/cli/gantry_options.hpp"
 #include "marker/cli/layout_options.hpp"
+#include "marker/cli/option_ranges.hpp"
+#include "marker/cli/option_values.hpp"
+#include "marker/output/output_file.hpp"
 #include "marker/peen/dot_fonts.hpp"
 #include "marker/peen/dot_layout.hpp"
 #include "marker/peen/gantry_run.hpp"
@@ -35,37 +40,63 @@ struct PeenArgs {
   bool block_straight = false;
 };
 
+// A plan holds at most this many dots: a 17-character VIN in the 10x16 font has about 1,400 and
+// a 100-character stroke-font text at the default pitch about 4,000; 50,000 plan and simulate in
+// about a second.
+constexpr std::size_t kMaxDots = 50'000;
+// Neighbouring dots at least this many motor steps apart: with the strokes' dots kept half a
+// pitch apart, 4 steps is the least that keeps two dots from rounding to the same step position.
+constexpr double kMinPitchSteps = 4;
+
 // "63x38" → 63 × 38 mm.
-Box parse_window(const std::string& s) {
-  const std::size_t x = s.find_first_of("xX");
-  double w = 0, h = 0;
-  try {
-    std::size_t used_w = 0, used_h = 0;
-    if (x == std::string::npos) throw std::invalid_argument("no x");
-    w = std::stod(s.substr(0, x), &used_w);
-    h = std::stod(s.substr(x + 1), &used_h);
-    if (used_w != x || used_h != s.size() - x - 1) throw std::invalid_argument("trailing");
-  } catch (const std::exception&) {
-    throw InputError("--window '" + s + "': expected WIDTHxHEIGHT in millimetres, e.g. 63x38");
-  }
-  if (!(w > 0) || !(h > 0))
-    throw InputError("--window '" + s + "': width and height must be positive");
-  return centred_window(w, h);
+Box parse_window(const std::string& s, double field_mm) {
+  const std::string option = "--window '" + s + "'";
+  const std::vector<double> v = parse_numbers("--window", s, "xX", 2, "WIDTHxHEIGHT in millimetres, e.g. 63x38");
+  const Range in_field = positive_up_to(field_mm, "mm (the --field is " + format_number(field_mm) + " mm)");
+  check_range(option + " width", v[0], in_field);
+  check_range(option + " height", v[1], in_field);
+  return centred_window(v[0], v[1]);
 }
 
-DotText build_dots(const PeenArgs& a) {
+// The finest dot spacing the gantry can strike apart: kMinPitchSteps of its coarser axis.
+double min_pitch_mm(const GantryConfig& g) {
+  return kMinPitchSteps / std::min(g.x.steps_per_mm, g.y.steps_per_mm);
+}
+
+DotText build_dots(const PeenArgs& a, const GantryConfig& gantry) {
   const std::string text = unescape_text(a.text);
+  const std::string steps = format_number(kMinPitchSteps) + " motor steps at --steps-per-mm " +
+                            format_number(std::min(gantry.x.steps_per_mm, gantry.y.steps_per_mm));
   DotText dots;
   if (const DotFont* font = find_dot_font(a.layout.font)) {
+    if (a.pitch_mm) throw InputError("--pitch: the " + a.layout.font + " dot font's pitch follows --height");
+    // Rows are height / (rows − 1) apart, columns that times the width factor.
+    const double spacing = a.layout.height_mm / (font->rows() - 1) * std::min(1.0, a.layout.width_factor);
+    if (spacing < min_pitch_mm(gantry))
+      throw InputError("--height " + format_number(a.layout.height_mm) + ": the " + a.layout.font +
+                       " dots would be " + format_number(spacing) + " mm apart, closer than " +
+                       format_number(min_pitch_mm(gantry)) + " mm (" + steps + "); raise --height or --steps-per-mm");
     dots = layout_dot_text(text, *font, to_layout_options(a.layout));
   } else {
     // Any stroke font: "continuous" dots along the strokes.
     const double pitch = a.pitch_mm ? *a.pitch_mm : a.layout.height_mm / 10;
-    dots = dots_along_strokes(build_figure(a.text, a.layout).figure, pitch);
+    check_range(a.pitch_mm ? "--pitch" : "--pitch (default --height / 10)", pitch,
+                Range{min_pitch_mm(gantry), a.layout.height_mm, "mm (from " + steps + " up to the --height)"});
+    const LaidOutText laid = build_figure(a.text, a.layout);
+    // Counted before any dot is made: a fine pitch on a long text must not run for minutes.
+    const double estimate = laid.figure.mark_length_mm() / pitch;
+    if (estimate > kMaxDots)
+      throw InputError("--pitch " + format_number(pitch) + " mm gives about " + format_number(std::round(estimate)) +
+                       " dots along " + format_number(laid.figure.mark_length_mm()) +
+                       " mm of strokes, more than a plan may hold (" + std::to_string(kMaxDots) +
+                       "); raise --pitch or shorten the text");
+    dots = dots_along_strokes(laid.figure, pitch);
   }
   if (dots.dots.empty()) throw InputError("text '" + a.text + "' has no dots to strike");
-  if (!(a.layout.field_mm > 0)) throw InputError("--field must be a positive size in mm");
-  require_inside(dots.bounds(), Field{a.layout.field_mm}, "the dot text");
+  if (dots.dots.size() > kMaxDots)
+    throw InputError("text '" + a.text + "' has " + std::to_string(dots.dots.size()) +
+                     " dots, more than a plan may hold (" + std::to_string(kMaxDots) + "); shorten the text");
+  require_inside(dots.bounds(), Field{a.layout.field_mm}, "the dot text", kFieldRemedy);
   return dots;
 }
 
@@ -92,9 +123,11 @@ void print_comparison(const nlohmann::json& rows) {
 }
 
 int run_peen(const PeenArgs& a) {
+  if (!a.output.empty()) check_output_path("--output", a.output, kPlanExtensions);
+  if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
   const GantryConfig gantry = to_gantry(a.gantry);
-  const DotText dots = build_dots(a);
-  const Box window = a.window.empty() ? tight_window(dots) : parse_window(a.window);
+  const DotText dots = build_dots(a, gantry);
+  const Box window = a.window.empty() ? tight_window(dots) : parse_window(a.window, a.layout.field_mm);
   require_inside(window, Field{a.layout.field_mm}, "the marking window");
   const PeenSetup setup{window, gantry, !a.block_straight, &interrupt_flag()};
   const PlannerKind chosen = *parse_planner(a.planner);
@@ -138,6 +171,9 @@ int run_peen(const PeenArgs& a) {
 Command make_peen_command() {
   auto a = std::make_shared<PeenArgs>();
   a->layout.font = "5x7";
+  // Centred on the field: a pin marker's text sits in the middle of its window, and a 12-letter
+  // 5 mm line (60 mm) then fits the default field, which it does not starting at the centre.
+  a->layout.align = "center";
   return Command(
       [a](CLI::App& app) {
         auto* sub = app.add_subcommand(
@@ -153,8 +189,10 @@ Command make_peen_command() {
         sub->add_option("--window", a->window,
                         "marking window WIDTHxHEIGHT in mm, centred on the field (default: the "
                         "dots' bounding box); the whole-window snake sweeps all of it");
-        sub->add_option("--pitch", a->pitch_mm,
-                        "dot pitch along strokes for stroke fonts, mm (default: height / 10)");
+        add_ranged_option(*sub, "--pitch", a->pitch_mm,
+                          "dot pitch along strokes for stroke fonts, mm (default: height / 10; at least " +
+                              format_number(kMinPitchSteps) + " motor steps, at most the height)",
+                          positive_up_to(10000, "mm"));
         sub->add_flag("--compare", a->compare, "time all three planners side by side");
         sub->add_flag("--json", a->json, "print the result as JSON");
         sub->add_option("--preview", a->preview, "draw dots and needle path to FILE.svg or FILE.png");

@@ -1,8 +1,10 @@
-// `marker preview TEXT [layout options] -o FILE.svg|FILE.png`
+// `marker preview TEXT [layout options] -o FILE.svg|FILE.png [--no-travel] [--json]`
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "marker/cli/commands.hpp"
 #include "marker/cli/layout_options.hpp"
+#include "marker/output/output_file.hpp"
 #include "marker/preview/figure_preview.hpp"
 
 namespace mark::cli {
@@ -13,6 +15,7 @@ Command make_preview_command() {
     LayoutArgs layout;
     std::string output;
     bool no_travel = false;
+    bool json = false;
   };
   auto a = std::make_shared<Args>();
   return Command(
@@ -22,15 +25,33 @@ Command make_preview_command() {
         add_layout_options(*sub, a->layout);
         sub->add_option("-o,--output", a->output, "output file, .svg or .png")->required();
         sub->add_flag("--no-travel", a->no_travel, "leave out the dashed travel between strokes");
+        sub->add_flag("--json", a->json, "print what was drawn as one JSON object (docs/json.md)");
         return sub;
       },
       [a] {
+        check_output_path("--output", a->output, {".svg", ".png"});
         const LaidOutText laid = build_figure(a->text, a->layout);
         PreviewOptions options;
         options.show_travel = !a->no_travel;
+        options.circle = to_layout_options(a->layout).circle;
         write_figure_preview(laid.figure, laid.field, a->output, options);
-        std::cerr << "marker: wrote " << a->output << " (" << laid.figure.glyphs.size()
-                  << " glyphs, " << laid.figure.element_count() << " elements)\n";
+        const Box b = laid.figure.bounds();
+        if (a->json) {
+          const nlohmann::json j = {{"output", a->output},
+                                    {"text", unescape_text(a->text)},
+                                    {"font", a->layout.font},
+                                    {"height_mm", a->layout.height_mm},
+                                    {"glyphs", laid.figure.glyphs.size()},
+                                    {"elements", laid.figure.element_count()},
+                                    {"mark_length_mm", laid.figure.mark_length_mm()},
+                                    {"bounds_mm",
+                                     {{"x_min", b.min.x()}, {"y_min", b.min.y()}, {"x_max", b.max.x()}, {"y_max", b.max.y()}}},
+                                    {"field_mm", laid.field.size_mm}};
+          std::cout << j.dump(2) << "\n";
+          return 0;
+        }
+        std::cerr << "marker: wrote " << a->output << " (" << laid.figure.glyphs.size() << " glyphs, "
+                  << laid.figure.element_count() << " elements)\n";
         return 0;
       });
 }

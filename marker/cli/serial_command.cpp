@@ -12,8 +12,10 @@
 
 #include "fonts/error.hpp"
 #include "marker/cli/commands.hpp"
+#include "marker/cli/option_ranges.hpp"
 #include "marker/cli/production_options.hpp"
 #include "marker/job/job_file.hpp"
+#include "marker/limits/counter_limits.hpp"
 #include "marker/store/open_store.hpp"
 
 namespace mark::cli {
@@ -123,11 +125,11 @@ Command make_serial_command() {
         show->add_flag("--json", a->json, "print one JSON object (next, highest_issued)");
         auto* set = serial->add_subcommand("set", "make VALUE the counter's next value (never at or behind an issued one)");
         common(set);
-        set->add_option("value", a->value, "the next value")->required();
+        add_ranged_option(*set, "value", a->value, "the next value", kCounterValueRange)->required();
         set->add_option("--station", a->station, "station name for the audit log (default: host name)");
         auto* reserve = serial->add_subcommand("reserve", "issue COUNT values without marking");
         common(reserve);
-        reserve->add_option("count", a->count, "how many values")->required();
+        add_ranged_option(*reserve, "count", a->count, "how many values", kReserveCountRange)->required();
         reserve->add_option("--station", a->station, "station name for the audit log (default: host name)");
         reserve->add_flag("--json", a->json, "print the reserved values as JSON");
         *subs = {show, set, reserve};

@@ -24,25 +24,27 @@ std::vector<Point> to_mm(const Path& path) {
   return pts;
 }
 
+void append_glyph_polylines(const PlacedGlyph& g, double chord_tol_mm, Paths& out) {
+  bool open = false;
+  for (const Element& e : g.elements) {
+    if (!e.laser()) {
+      open = false;
+      continue;
+    }
+    const std::vector<Point> pts = flatten_element(e, chord_tol_mm);
+    const IntPoint first = to_nm(pts.front());
+    if (!open || out.back().back() != first) out.emplace_back(1, first);
+    for (std::size_t k = 1; k < pts.size(); ++k) {
+      const IntPoint q = to_nm(pts[k]);
+      if (q != out.back().back()) out.back().push_back(q);
+    }
+    open = true;
+  }
+}
+
 Paths stroke_polylines(const Figure& figure, double chord_tol_mm) {
   Paths out;
-  for (const PlacedGlyph& g : figure.glyphs) {
-    bool open = false;
-    for (const Element& e : g.elements) {
-      if (!e.laser()) {
-        open = false;
-        continue;
-      }
-      const std::vector<Point> pts = flatten_element(e, chord_tol_mm);
-      const IntPoint first = to_nm(pts.front());
-      if (!open || out.back().back() != first) out.emplace_back(1, first);
-      for (std::size_t k = 1; k < pts.size(); ++k) {
-        const IntPoint q = to_nm(pts[k]);
-        if (q != out.back().back()) out.back().push_back(q);
-      }
-      open = true;
-    }
-  }
+  for (const PlacedGlyph& g : figure.glyphs) append_glyph_polylines(g, chord_tol_mm, out);
   return out;
 }
 

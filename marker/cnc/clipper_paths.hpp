@@ -20,6 +20,8 @@ std::vector<Point> to_mm(const ClipperLib::Path& path);
 
 // Every lit stroke of the Figure (field frame) as an open polyline, flattened within chord_tol_mm.
 ClipperLib::Paths stroke_polylines(const Figure& figure, double chord_tol_mm);
+// The same for one placed glyph, appended to `out`.
+void append_glyph_polylines(const PlacedGlyph& glyph, double chord_tol_mm, ClipperLib::Paths& out);
 
 // Strokes grown by `radius_mm` with round ends and joins (the region a round tool or a stroke
 // of width 2·radius covers), as a union of closed polygons.

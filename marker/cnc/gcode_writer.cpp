@@ -23,9 +23,9 @@ constexpr double kRotated = 1e-12;           // radians below which a call count
 // Fanuc subprograms placed by G52), shifted by the call's #1/#2, or also rotated by #3.
 enum class Frame { literal, shifted, rotated };
 
-// A comment the controller will not choke on: printable ASCII without parentheses.
-std::string comment(const std::string& text, bool upper) {
-  std::string c = "(";
+// A comment's text the controller will not choke on: printable ASCII without parentheses.
+std::string comment_text(const std::string& text, bool upper) {
+  std::string c;
   for (unsigned char ch : text) {
     char o = ch >= 0x20 && ch < 0x7F ? static_cast<char>(ch) : '?';
     if (o == '(') o = '[';
@@ -33,7 +33,41 @@ std::string comment(const std::string& text, bool upper) {
     if (upper) o = static_cast<char>(std::toupper(static_cast<unsigned char>(o)));
     c += o;
   }
-  return c + ")";
+  return c;
+}
+
+std::string parenthesised(std::string_view text) {
+  std::string c;
+  c.reserve(text.size() + 2);
+  c += '(';
+  c += text;
+  c += ')';
+  return c;
+}
+
+std::string comment(const std::string& text, bool upper) { return parenthesised(comment_text(text, upper)); }
+
+// The text as comments of at most `width` characters each (parentheses included; the first at
+// most `first_width`): one per line of the text, long lines wrapped at a space where there is
+// one, nothing dropped.
+std::vector<std::string> comment_lines(const std::string& text, bool upper, std::size_t width,
+                                       std::size_t first_width) {
+  std::vector<std::string> out;
+  auto room = [&] { return (out.empty() ? first_width : width) - 2; };
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    std::string line = comment_text(text.substr(start, end - start), upper);
+    while (line.size() > room()) {
+      std::size_t cut = line.rfind(' ', room());
+      if (cut == std::string::npos || cut == 0) cut = room();
+      out.push_back(parenthesised(std::string_view(line).substr(0, cut)));
+      line.erase(0, line[cut] == ' ' ? cut + 1 : cut);
+    }
+    out.push_back(parenthesised(line));
+    start = end + 1;
+  }
+  return out;
 }
 
 class Writer {
@@ -68,6 +102,7 @@ class Writer {
  private:
   const Toolpath& tp_;
   const GcodeOptions& o_;
+  const DialectLimits limits_ = dialect_limits(o_.dialect);
   int dec_ = 4, feed_dec_ = 1;
   double scale_ = 1;
   std::vector<bool> rotated_sub_, called_sub_;
@@ -85,6 +120,12 @@ class Writer {
     return false;
   }
   void line(const std::string& s) {
+    // Every line the writer makes is far shorter; this guards the limit against a future change.
+    if (s.size() > limits_.line_chars)
+      throw std::logic_error("G-code writer: line " + std::to_string(stats_.lines + 1) + " has " +
+                             std::to_string(s.size()) + " characters, more than the " +
+                             std::string(to_string(o_.dialect)) + " limit of " +
+                             std::to_string(limits_.line_chars));
     out_ += s;
     out_ += '\n';
     ++stats_.lines;
@@ -121,7 +162,9 @@ class Writer {
     line(o_.end_with_m30 ? "M30" : "M2");
   }
   void title() {
-    if (!o_.title.empty()) line(comment(o_.title, upper()));
+    if (o_.title.empty()) return;
+    for (const std::string& c : comment_lines(o_.title, upper(), limits_.line_chars, limits_.line_chars))
+      line(c);
   }
 
   // ---- dialects ------------------------------------------------------------------------------
@@ -164,8 +207,13 @@ class Writer {
     char head[16];
     std::snprintf(head, sizeof head, "O%04d", o_.program_number);
     std::string first(head);
-    if (!o_.title.empty()) first.append(" ").append(comment(o_.title, true));
+    // The program name on the O line; a longer title continues in comment lines below it.
+    std::vector<std::string> name;
+    if (!o_.title.empty())
+      name = comment_lines(o_.title, true, limits_.line_chars, limits_.program_name_chars + 2);
+    if (!name.empty()) first.append(" ").append(name.front());
     line(first);
+    for (std::size_t k = 1; k < name.size(); ++k) line(name[k]);
     preamble(" G94");
     if (uses_comp())
       line(comment("D1 = tool radius " + num(tp_.comp_diameter_mm / 2 * scale_) +
@@ -369,11 +417,18 @@ class Writer {
 }  // namespace
 
 void validate(const GcodeOptions& o) {
-  auto check = [](const std::vector<std::string>& lines, const char* what) {
-    for (const std::string& l : lines)
+  const DialectLimits limits = dialect_limits(o.dialect);
+  auto check = [&](const std::vector<std::string>& lines, const char* what) {
+    for (const std::string& l : lines) {
       if (l.find_first_of("\r\n%") != std::string::npos)
         throw InputError(std::string(what) + " line '" + l +
                          "' contains a line break or '%', which would end the program early");
+      if (l.size() > limits.line_chars)
+        throw InputError(std::string(what) + " line '" + l.substr(0, 20) + "…' has " +
+                         std::to_string(l.size()) + " characters, more than the " +
+                         std::string(to_string(o.dialect)) + " dialect's " +
+                         std::to_string(limits.line_chars) + " per line");
+    }
   };
   check(o.header, "header");
   check(o.footer, "footer");
@@ -393,6 +448,24 @@ std::string write_gcode(const Toolpath& toolpath, const GcodeOptions& options, G
     throw InputError("too many subprograms for Fanuc O numbers from O" +
                      std::to_string(options.first_subprogram_number));
   return Writer(toolpath, options).run(stats);
+}
+
+DialectLimits dialect_limits(Dialect d) {
+  switch (d) {
+    case Dialect::linuxcnc: return {252, 0};
+    case Dialect::fanuc: return {128, 31};
+    case Dialect::plain: return {79, 0};
+  }
+  return {79, 0};
+}
+
+std::string_view to_string(Dialect d) {
+  switch (d) {
+    case Dialect::linuxcnc: return "linuxcnc";
+    case Dialect::fanuc: return "fanuc";
+    case Dialect::plain: return "plain";
+  }
+  return "plain";
 }
 
 Dialect parse_dialect(const std::string& name) {

@@ -1,5 +1,7 @@
 #include "marker/cnc/protrusion.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "fonts/error.hpp"
@@ -21,6 +23,9 @@ constexpr double kArcTolMm = 0.002;    // Clipper's round joins
 constexpr double kKeepOutSlackMm = kChordTolMm + 3 * kArcTolMm;
 // Uncut material thinner than this is the film the slack leaves, not a region worth reporting.
 constexpr double kUncutFilmMm = 0.02;
+// A pocket is cleared in at most this many nested loops (a 1 mm tool at the default step-over
+// clears a 800 mm wide plate with it); more would take Clipper minutes and the machine days.
+constexpr double kMaxPocketLoops = 1000;
 
 std::string mm(double v) {
   std::ostringstream s;
@@ -75,6 +80,13 @@ ProtrusionResult protrusion_toolpath(const Figure& figure, const CutSettings& s,
   res.cleared = offset_region(res.tool_region, r, kArcTolMm);
   res.uncut = uncut_regions(difference({rectangle_nm(res.plate)}, res.letters), res.cleared, res.uncut_region);
 
+  // The deepest point of the pocket is at most half the inset plate's shorter side from a wall.
+  const double nesting = std::min(inset.width(), inset.height()) / 2 / res.stepover_mm;
+  if (nesting > kMaxPocketLoops)
+    throw InputError("the pocket around the letters needs up to " + std::to_string(std::lround(nesting)) +
+                     " nested loops at a step-over of " + mm(res.stepover_mm) + ", more than " +
+                     std::to_string(static_cast<int>(kMaxPocketLoops)) +
+                     "; raise the step-over or narrow the margin");
   std::vector<PocketLoop> loops = pocket_loops(res.tool_region, res.stepover_mm, kArcTolMm);
   std::vector<CompContour> walls;
   if (ps.cutter_comp) {

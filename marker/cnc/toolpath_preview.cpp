@@ -11,6 +11,24 @@ namespace {
 
 constexpr double kWidthPx = 1200;
 
+constexpr Rgb kStock{0.93, 0.86, 0.62}, kCleared{0.80, 0.89, 0.98}, kLetters{0.93, 0.78, 0.35},
+    kUncut{0.9, 0.05, 0.05}, kToolCentre{0.05, 0.15, 0.55}, kRapid{0.85, 0.2, 0.1};
+
+std::vector<LegendEntry> legend(const ProtrusionResult* prot) {
+  std::vector<LegendEntry> l;
+  if (prot) {
+    l.push_back({"stock plate", kStock, LegendMark::area});
+    l.push_back({"cleared pocket", kCleared, LegendMark::area});
+    l.push_back({"raised letters", kLetters, LegendMark::area});
+    if (!prot->uncut.empty()) l.push_back({"material the tool cannot reach", kUncut, LegendMark::area});
+  } else {
+    l.push_back({"groove at full depth (one tool wide)", kCleared, LegendMark::area});
+  }
+  l.push_back({"tool centre, cutting", kToolCentre, LegendMark::line});
+  l.push_back({"rapid moves", kRapid, LegendMark::dashed});
+  return l;
+}
+
 void add_paths(cairo_t* cr, const ClipperLib::Paths& paths) {
   for (const ClipperLib::Path& p : paths) {
     if (p.empty()) continue;
@@ -24,10 +42,10 @@ void add_paths(cairo_t* cr, const ClipperLib::Paths& paths) {
   }
 }
 
-void fill_paths(cairo_t* cr, const ClipperLib::Paths& paths, double r, double g, double b) {
+void fill_paths(cairo_t* cr, const ClipperLib::Paths& paths, const Rgb& c) {
   cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
   add_paths(cr, paths);
-  cairo_set_source_rgb(cr, r, g, b);
+  cairo_set_source_rgb(cr, c.r, c.g, c.b);
   cairo_fill(cr);
 }
 
@@ -59,16 +77,16 @@ void write_toolpath_preview(const Figure& figure, const Toolpath& toolpath, doub
   const double pad = std::max(0.05 * std::max(view.width(), view.height()), tool_diameter_mm);
   view.min -= Point(pad, pad);
   view.max += Point(pad, pad);
-  Canvas canvas(path, view, kWidthPx / std::max(view.width(), 1e-3));
+  Canvas canvas(path, view, kWidthPx / std::max(view.width(), 1e-3), legend(prot));
   cairo_t* cr = canvas.cr();
 
   if (prot) {
     cairo_rectangle(cr, prot->plate.min.x(), prot->plate.min.y(), prot->plate.width(), prot->plate.height());
-    cairo_set_source_rgb(cr, 0.93, 0.86, 0.62);  // the stock
+    cairo_set_source_rgb(cr, kStock.r, kStock.g, kStock.b);
     cairo_fill(cr);
-    fill_paths(cr, prot->cleared, 0.80, 0.89, 0.98);
-    fill_paths(cr, prot->letters, 0.93, 0.78, 0.35);  // raised letters
-    fill_paths(cr, prot->uncut_region, 0.9, 0.05, 0.05);
+    fill_paths(cr, prot->cleared, kCleared);
+    fill_paths(cr, prot->letters, kLetters);
+    fill_paths(cr, prot->uncut_region, kUncut);
   }
 
   // Depression: the groove the tool cuts at full depth, one tool wide.
@@ -82,7 +100,7 @@ void write_toolpath_preview(const Figure& figure, const Toolpath& toolpath, doub
       at = Point(m.end.x(), m.end.y());
       known = true;
     }
-    cairo_set_source_rgb(cr, 0.80, 0.89, 0.98);
+    cairo_set_source_rgb(cr, kCleared.r, kCleared.g, kCleared.b);
     cairo_set_line_width(cr, tool_diameter_mm);
     cairo_stroke(cr);
   }
@@ -93,7 +111,7 @@ void write_toolpath_preview(const Figure& figure, const Toolpath& toolpath, doub
     at = Point(m.end.x(), m.end.y());
     known = true;
   }
-  cairo_set_source_rgb(cr, 0.05, 0.15, 0.55);
+  cairo_set_source_rgb(cr, kToolCentre.r, kToolCentre.g, kToolCentre.b);
   canvas.set_line_px(1.0);
   cairo_stroke(cr);
   known = false;
@@ -105,7 +123,7 @@ void write_toolpath_preview(const Figure& figure, const Toolpath& toolpath, doub
     at = Point(m.end.x(), m.end.y());
     known = true;
   }
-  cairo_set_source_rgba(cr, 0.85, 0.2, 0.1, 0.7);
+  cairo_set_source_rgba(cr, kRapid.r, kRapid.g, kRapid.b, 0.7);
   canvas.set_line_px(0.8);
   canvas.set_dash_px(4, 3);
   cairo_stroke(cr);

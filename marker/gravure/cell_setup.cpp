@@ -1,6 +1,6 @@
 #include "marker/gravure/cell_setup.hpp"
 
-#include "marker/gravure/parameter_range.hpp"
+#include "marker/limits/gravure_limits.hpp"
 
 namespace mark {
 

@@ -4,7 +4,7 @@
 
 #include "marker/gravure/head_design.hpp"
 #include "marker/gravure/image_cells.hpp"
-#include "marker/gravure/parameter_range.hpp"
+#include "marker/limits/gravure_limits.hpp"
 
 namespace mark {
 namespace {

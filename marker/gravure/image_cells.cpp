@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "fonts/error.hpp"
-#include "marker/gravure/parameter_range.hpp"
+#include "marker/limits/gravure_limits.hpp"
 
 namespace mark {
 namespace {

@@ -1,6 +1,6 @@
 #include "marker/gravure/screen.hpp"
 
-#include "marker/gravure/parameter_range.hpp"
+#include "marker/limits/gravure_limits.hpp"
 
 namespace mark {
 

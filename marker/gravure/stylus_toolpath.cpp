@@ -6,7 +6,7 @@
 
 #include "driver/stylus_cells.hpp"
 #include "driver/stylus_head_model.hpp"
-#include "marker/gravure/parameter_range.hpp"
+#include "marker/limits/gravure_limits.hpp"
 
 namespace mark {
 namespace {

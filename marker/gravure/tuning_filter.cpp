@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "marker/gravure/parameter_range.hpp"
+#include "marker/limits/gravure_limits.hpp"
 
 namespace mark {
 

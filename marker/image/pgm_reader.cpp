@@ -102,6 +102,11 @@ GrayImage parse_pgm(std::string_view bytes, const std::string& source) {
     }
     return img;
   }
+  // Every ASCII sample takes at least one digit: a header that promises more samples than the
+  // file can hold is refused before anything is allocated for them.
+  if (bytes.size() - r.pos_ < n)
+    r.fail("truncated: " + std::to_string(n) + " ASCII samples need at least " + std::to_string(n) +
+           " bytes, " + std::to_string(bytes.size() - r.pos_) + " left");
   img.pixels.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     const long v = r.number("sample");

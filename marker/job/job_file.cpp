@@ -9,11 +9,12 @@
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job_parse_context.hpp"
 #include "marker/job/json_reader.hpp"
+#include "marker/limits/counter_limits.hpp"
+#include "marker/limits/layout_limits.hpp"
+#include "marker/limits/pen_limits.hpp"
 
 namespace mark {
 namespace {
-
-constexpr double kBig = 1e6;
 
 // Duplicate keys and absurd nesting are errors too (nlohmann would keep the last silently).
 struct StrictJson {
@@ -69,7 +70,7 @@ HeadModel parse_head(JsonReader& top, double& spot_um) {
   } else if (h) {
     JsonReader head = top.object("head");
     model = head.string("model").value_or(model);
-    spot_um = head.number("spot_diameter_um", 1, 10000, "µm").value_or(spot_um);
+    spot_um = head.number("spot_diameter_um", kSpotRange).value_or(spot_um);
     head.finish();
   }
   const auto found = find_head(model);
@@ -84,12 +85,12 @@ HeadModel parse_head(JsonReader& top, double& spot_um) {
 CounterSpec parse_counter(JsonReader c, const std::string& name, const TimeZone& job_zone) {
   CounterSpec s;
   s.name = name;
-  s.start = c.integer("start", 0, INT64_MAX).value_or(1);
-  s.step = c.integer("step", -INT64_MAX, INT64_MAX).value_or(1);
-  s.limit = c.integer("limit", 0, INT64_MAX);
+  s.start = c.integer("start", kCounterValueRange).value_or(1);
+  s.step = c.integer("step", kCounterStepRange).value_or(1);
+  s.limit = c.integer("limit", kCounterValueRange);
   if (auto p = c.choice("at_limit", {"stop", "wrap"})) s.at_limit = *parse_end_policy(*p);
-  s.marks_per_serial = c.integer("marks_per_serial", 1, 1'000'000).value_or(1);
-  s.width = static_cast<int>(c.integer("width", 0, 64).value_or(0));
+  s.marks_per_serial = c.integer("marks_per_serial", kMarksPerSerialRange).value_or(1);
+  s.width = static_cast<int>(c.integer("width", kCounterWidthRange).value_or(0));
   if (auto p = c.choice("padding", {"keep", "suppress", "blank"})) s.padding = *parse_padding(*p);
   const std::optional<std::string> alphabet = c.choice("alphabet", {"decimal", "hex", "base36", "base33"});
   const std::optional<std::string> digits = c.string("digits");
@@ -135,15 +136,15 @@ JobPen parse_pen(JsonReader p, const std::string& name, const HeadModel& head) {
   us("polygon_delay_us", m.polygon_delay_s);
   if (auto v = p.number("jump_settle_um", 0, 1e6, "µm")) m.jump_settle_mm = *v * 1e-3;
   m.blank_angle_deg = p.number("blank_angle_deg", 0, 180, "°").value_or(m.blank_angle_deg);
-  if (auto v = p.number("run_in_mm", 0, 100, "mm")) m.run_in_mm = *v;
-  m.min_run_in_mm = p.number("min_run_in_mm", 0, 100, "mm").value_or(m.min_run_in_mm);
-  m.run_out_mm = p.number("run_out_mm", 0, 100, "mm").value_or(m.run_out_mm);
+  if (auto v = p.number("run_in_mm", kExtensionRange)) m.run_in_mm = *v;
+  m.min_run_in_mm = p.number("min_run_in_mm", kExtensionRange).value_or(m.min_run_in_mm);
+  m.run_out_mm = p.number("run_out_mm", kExtensionRange).value_or(m.run_out_mm);
   if (auto v = p.number("settle_um", 0.001, 1000, "µm")) m.settle_mm = *v * 1e-3;
   m.join_speed_mm_s = p.number("join_speed_mm_s", 0.001, head.max_speed_mm_s, "mm/s").value_or(m.join_speed_mm_s);
-  pen.laser.power_pct = p.number("power_pct", 0, 100, "%").value_or(pen.laser.power_pct);
-  pen.laser.frequency_khz = p.number("frequency_khz", 0.1, 10000, "kHz").value_or(pen.laser.frequency_khz);
-  pen.laser.pulse_width_ns = p.number("pulse_width_ns", 0, 1e6, "ns").value_or(pen.laser.pulse_width_ns);
-  pen.passes = static_cast<int>(p.integer("passes", 1, 100).value_or(1));
+  pen.laser.power_pct = p.number("power_pct", kPowerRange).value_or(pen.laser.power_pct);
+  pen.laser.frequency_khz = p.number("frequency_khz", kFrequencyRange).value_or(pen.laser.frequency_khz);
+  pen.laser.pulse_width_ns = p.number("pulse_width_ns", kPulseWidthRange).value_or(pen.laser.pulse_width_ns);
+  pen.passes = static_cast<int>(p.integer("passes", kPassesRange).value_or(1));
   p.finish();
   return pen;
 }
@@ -187,7 +188,7 @@ JobFile parse_job(std::string_view text, const std::string& source) {
   job.job_name = top.string("name").value_or(std::filesystem::path(source).stem().string());
   job.device = top.choice("device", {"sim"}).value_or("sim");
   job.head = parse_head(top, job.spot_diameter_um);
-  job.head.field_mm = top.number("field_mm", 1, 2000, "mm").value_or(job.head.field_mm);
+  job.head.field_mm = top.number("field_mm", kFieldRange).value_or(job.head.field_mm);
   if (auto z = top.string("time_zone")) {
     try {
       job.time_zone = TimeZone::named(*z);

@@ -6,11 +6,10 @@
 #include "marker/job/job_file.hpp"
 #include "marker/job/job_parse_context.hpp"
 #include "marker/job/json_reader.hpp"
+#include "marker/limits/layout_limits.hpp"
 
 namespace mark {
 namespace {
-
-constexpr double kBig = 1e6;
 
 ObjectBody parse_text(JsonReader& o, const JobParseContext& ctx) {
   TextObject t;
@@ -22,27 +21,27 @@ ObjectBody parse_text(JsonReader& o, const JobParseContext& ctx) {
     t.font = *f;
   }
   LayoutOptions& l = t.layout;
-  l.height_mm = o.number("height_mm", 1e-3, 1000, "mm").value_or(l.height_mm);
-  l.width_factor = o.number("width_factor", 0.01, 100).value_or(l.width_factor);
-  l.gap_mm = o.number("gap_mm", -kBig, kBig, "mm").value_or(l.gap_mm);
-  l.line_spacing = o.number("line_spacing", 0.01, 100).value_or(l.line_spacing);
+  l.height_mm = o.number("height_mm", kHeightRange).value_or(l.height_mm);
+  l.width_factor = o.number("width_factor", kWidthFactorRange).value_or(l.width_factor);
+  l.gap_mm = o.number("gap_mm", kGapRange).value_or(l.gap_mm);
+  l.line_spacing = o.number("line_spacing", kLineSpacingRange).value_or(l.line_spacing);
   if (auto a = o.choice("align", {"left", "center", "right"}))
     l.align = *a == "center" ? Align::center : *a == "right" ? Align::right : Align::left;
-  l.base = Point(o.number("x_mm", -kBig, kBig, "mm").value_or(0),
-                 o.number("y_mm", -kBig, kBig, "mm").value_or(0));
-  l.angle_deg = o.number("angle_deg", -360, 360, "°").value_or(0);
-  l.italic_deg = o.number("italic_deg", -79.9, 79.9, "°").value_or(0);
+  l.base = Point(o.number("x_mm", kPositionRange).value_or(0),
+                 o.number("y_mm", kPositionRange).value_or(0));
+  l.angle_deg = o.number("angle_deg", kAngleRange).value_or(0);
+  l.italic_deg = o.number("italic_deg", kItalicRange).value_or(0);
   l.mirror = o.boolean("mirror").value_or(false);
   l.replace_missing = o.boolean("replace_missing").value_or(false);
   if (o.has("circle")) {
     JsonReader c = o.object("circle");
     CircleFit fit;
-    const auto r = c.number("radius_mm", 1e-3, kBig, "mm");
+    const auto r = c.number("radius_mm", kRadiusRange);
     if (!r) c.fail("radius_mm", "circular fitting needs the circle's radius");
     fit.radius_mm = *r;
-    fit.center = Point(c.number("cx_mm", -kBig, kBig, "mm").value_or(0),
-                       c.number("cy_mm", -kBig, kBig, "mm").value_or(0));
-    fit.start_angle_deg = c.number("start_angle_deg", -360, 360, "°");
+    fit.center = Point(c.number("cx_mm", kPositionRange).value_or(0),
+                       c.number("cy_mm", kPositionRange).value_or(0));
+    fit.start_angle_deg = c.number("start_angle_deg", kAngleRange);
     fit.inside = c.boolean("inside").value_or(false);
     c.finish();
     if (l.angle_deg != 0)

@@ -97,20 +97,28 @@ std::optional<std::string> JsonReader::string(std::string_view key) {
 
 std::optional<double> JsonReader::number(std::string_view key, double lo, double hi,
                                          std::string_view unit) {
+  return number(key, Range{lo, hi, std::string(unit)});
+}
+
+std::optional<double> JsonReader::number(std::string_view key, const Range& range) {
   const nlohmann::json* v = find(key);
   if (!v) return std::nullopt;
   if (!v->is_number()) fail(key, std::string("expected a number, found ") + type_name(*v));
   const double d = v->get<double>();
-  // Appended, not " " + unit: GCC 12 warns falsely (-Wrestrict) on that operator+.
-  std::string u;
-  if (!unit.empty()) u.append(" ").append(unit);
-  if (!std::isfinite(d) || d < lo || d > hi)
-    fail(key, num(d) + u + " is outside " + num(lo) + " to " + num(hi) + u);
+  if (!range.contains(d)) {
+    std::string value = num(d);
+    if (!range.unit.empty()) value.append(" ").append(range.unit);
+    fail(key, value + " is outside " + range.text());
+  }
   return d;
 }
 
 std::optional<std::int64_t> JsonReader::integer(std::string_view key, std::int64_t lo,
                                                 std::int64_t hi) {
+  return integer(key, WholeRange{lo, hi});
+}
+
+std::optional<std::int64_t> JsonReader::integer(std::string_view key, const WholeRange& range) {
   const nlohmann::json* v = find(key);
   if (!v) return std::nullopt;
   std::int64_t i = 0;
@@ -125,8 +133,7 @@ std::optional<std::int64_t> JsonReader::integer(std::string_view key, std::int64
     fail(key, std::string("expected a whole number, found ") +
                   (v->is_number() ? "a fraction" : type_name(*v)));
   }
-  if (i < lo || i > hi)
-    fail(key, std::to_string(i) + " is outside " + std::to_string(lo) + " to " + std::to_string(hi));
+  if (!range.contains(i)) fail(key, std::to_string(i) + " is outside " + range.text());
   return i;
 }
 

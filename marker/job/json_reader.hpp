@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "marker/limits/value_range.hpp"
+
 namespace mark {
 
 class JsonReader {
@@ -25,9 +27,12 @@ class JsonReader {
   const nlohmann::json* raw(std::string_view key);  // marks it used; nullptr if absent
 
   std::optional<std::string> string(std::string_view key);
+  // Finite number within the range (marker/limits/: the same ranges as the command line's).
+  std::optional<double> number(std::string_view key, const Range& range);
   // Finite number within [lo, hi] (named with `unit` in the error).
   std::optional<double> number(std::string_view key, double lo, double hi, std::string_view unit = "");
-  // Whole number within [lo, hi] (64-bit; 1.0 is not accepted for a whole number).
+  // Whole number within the range (64-bit; 1.0 is not accepted for a whole number).
+  std::optional<std::int64_t> integer(std::string_view key, const WholeRange& range);
   std::optional<std::int64_t> integer(std::string_view key, std::int64_t lo, std::int64_t hi);
   std::optional<bool> boolean(std::string_view key);
   // One of `choices`.

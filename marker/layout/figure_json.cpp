@@ -31,8 +31,8 @@ nlohmann::json element_to_json(const Element& e) {
                           j["rx"] = el.rx;
                           j["ry"] = el.ry;
                           j["rotation_deg"] = degrees(el.rotation);
-                          j["start_param"] = degrees(el.start_param);
-                          j["end_param"] = degrees(el.start_param + el.sweep);
+                          j["start_deg"] = degrees(el.start_param);
+                          j["end_deg"] = degrees(el.start_param + el.sweep);
                           j["ccw"] = el.sweep > 0;
                         }},
              e.geometry());

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <sstream>
 
@@ -149,6 +150,24 @@ double line_width(const Figure& figure, const std::vector<std::size_t>& shapes, 
   return w;
 }
 
+// A negative gap may overlap letters, but every letter must still start after the one before it:
+// a gap that makes a letter step backwards would mark the text out of order.
+void require_forward(const Figure& figure, const std::vector<std::size_t>& shapes, double gap) {
+  if (shapes.size() < 2 || gap >= 0) return;
+  const std::size_t* narrowest = nullptr;
+  for (std::size_t i = 0; i + 1 < shapes.size(); ++i)
+    if (!narrowest || figure.shapes[shapes[i]].advance_mm < figure.shapes[*narrowest].advance_mm)
+      narrowest = &shapes[i];
+  const ShapedGlyph& g = figure.shapes[*narrowest];
+  if (g.advance_mm + gap > 0) return;
+  char msg[256];
+  std::snprintf(msg, sizeof msg,
+                "letter gap %g mm makes the letter after '%s' (advance %.3f mm) step backwards; "
+                "the gap must be more than %.3f mm for this text",
+                gap, encode_utf8(g.code_point).c_str(), g.advance_mm, -g.advance_mm);
+  throw InputError(msg);
+}
+
 }  // namespace
 
 Figure layout_text(std::string_view utf8_text, const StrokeFont& font, const LayoutOptions& o) {
@@ -176,6 +195,7 @@ void relayout_text(std::string_view utf8_text, const StrokeFont& font, const Lay
     // Mirroring reverses the letter order before fitting, as the paper does.
     if (o.mirror) std::reverse(shapes.begin(), shapes.end());
     const double width = line_width(figure, shapes, o.gap_mm);
+    require_forward(figure, shapes, o.gap_mm);
 
     if (!o.circle) {
       double x = o.base.x();
@@ -219,15 +239,29 @@ void relayout_text(std::string_view utf8_text, const StrokeFont& font, const Lay
   }
 }
 
-void require_inside(const Box& bounds, const Field& field, std::string_view what) {
+void require_inside(const Box& bounds, const Field& field, std::string_view what,
+                    std::string_view remedy) {
   const Box f = field.box();
   if (f.contains(bounds, 1e-9)) return;
-  std::ostringstream msg;
-  msg.precision(3);
-  msg << std::fixed << what << " leaves the field: it spans x " << bounds.min.x() << " to "
-      << bounds.max.x() << " mm, y " << bounds.min.y() << " to " << bounds.max.y()
-      << " mm; the field is " << field.size_mm << " mm square (±" << field.size_mm / 2 << " mm)";
-  throw InputError(msg.str());
+  // The side it leaves by most; a number too large for millimetres is shown in exponent form.
+  const struct { double by; const char* side; } sides[] = {{f.min.x() - bounds.min.x(), "left"},
+                                                          {bounds.max.x() - f.max.x(), "right"},
+                                                          {f.min.y() - bounds.min.y(), "bottom"},
+                                                          {bounds.max.y() - f.max.y(), "top"}};
+  const auto* worst = &sides[0];
+  for (const auto& s : sides)
+    if (!(s.by <= worst->by)) worst = &s;
+  auto mm = [](double v) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, std::abs(v) < 1e9 ? "%.3f" : "%.4g", v);
+    return std::string(buf);
+  };
+  std::string msg = std::string(what) + " leaves the field by " + mm(worst->by) + " mm at the " +
+                    worst->side + ": it spans x " + mm(bounds.min.x()) + " to " + mm(bounds.max.x()) +
+                    " mm, y " + mm(bounds.min.y()) + " to " + mm(bounds.max.y()) + " mm; the field is " +
+                    mm(field.size_mm) + " mm square (±" + mm(field.size_mm / 2) + " mm)";
+  if (!remedy.empty()) msg += "; " + std::string(remedy);
+  throw InputError(msg);
 }
 
 }  // namespace mark

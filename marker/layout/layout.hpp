@@ -60,7 +60,9 @@ struct Field {
   }
 };
 
-// Throws InputError naming what leaves the field and by how much.
-void require_inside(const Box& bounds, const Field& field, std::string_view what);
+// Throws InputError naming what leaves the field, on which side and by how much, and where it
+// lies; `remedy` (what the user can change) ends the message when given.
+void require_inside(const Box& bounds, const Field& field, std::string_view what,
+                    std::string_view remedy = {});
 
 }  // namespace mark

@@ -7,6 +7,23 @@
 #include "marker/preview/canvas.hpp"
 
 namespace mark {
+namespace {
+
+constexpr Rgb kWindow{0.55, 0.55, 0.55}, kRoute{0.85, 0.25, 0.1}, kDot{0.05, 0.15, 0.55}, kHome{0.1, 0.55, 0.2};
+
+std::vector<LegendEntry> legend(const PeenPlan& plan) {
+  std::vector<LegendEntry> l{{"dots struck", kDot, LegendMark::dot}, {"needle route", kRoute, LegendMark::line}};
+  for (const PlanStop& s : plan.stops)
+    if (!s.dot) {
+      l.push_back({"turns without a strike", kRoute, LegendMark::area});
+      break;
+    }
+  l.push_back({"marking window", kWindow, LegendMark::line});
+  l.push_back({"home", kHome, LegendMark::dot});
+  return l;
+}
+
+}  // namespace
 
 void write_peen_preview(const DotText& text, const PeenPlan& plan, const Box& window,
                         const std::string& path) {
@@ -17,11 +34,11 @@ void write_peen_preview(const DotText& text, const PeenPlan& plan, const Box& wi
   view.add(view.min - Point(margin, margin));
   view.add(view.max + Point(margin, margin));
   const double px_per_mm = std::clamp(1200.0 / view.width(), 2.0, 400.0);
-  Canvas canvas(path, view, px_per_mm);
+  Canvas canvas(path, view, px_per_mm, legend(plan));
   cairo_t* cr = canvas.cr();
 
   cairo_rectangle(cr, window.min.x(), window.min.y(), window.width(), window.height());
-  cairo_set_source_rgb(cr, 0.55, 0.55, 0.55);
+  cairo_set_source_rgb(cr, kWindow.r, kWindow.g, kWindow.b);
   canvas.set_line_px(1.0);
   cairo_stroke(cr);
 
@@ -29,7 +46,7 @@ void write_peen_preview(const DotText& text, const PeenPlan& plan, const Box& wi
   cairo_move_to(cr, plan.home_mm.x(), plan.home_mm.y());
   for (const PlanStop& s : plan.stops) cairo_line_to(cr, s.pos_mm.x(), s.pos_mm.y());
   cairo_line_to(cr, plan.home_mm.x(), plan.home_mm.y());
-  cairo_set_source_rgba(cr, 0.85, 0.25, 0.1, 0.75);
+  cairo_set_source_rgba(cr, kRoute.r, kRoute.g, kRoute.b, 0.75);
   canvas.set_line_px(1.0);
   cairo_stroke(cr);
 
@@ -38,18 +55,18 @@ void write_peen_preview(const DotText& text, const PeenPlan& plan, const Box& wi
     cairo_new_sub_path(cr);
     cairo_arc(cr, d.pos_mm.x(), d.pos_mm.y(), r, 0, 2 * std::numbers::pi);
   }
-  cairo_set_source_rgb(cr, 0.05, 0.15, 0.55);
+  cairo_set_source_rgb(cr, kDot.r, kDot.g, kDot.b);
   cairo_fill(cr);
 
   const double sq = r * 0.8;
   for (const PlanStop& s : plan.stops)
     if (!s.dot) cairo_rectangle(cr, s.pos_mm.x() - sq / 2, s.pos_mm.y() - sq / 2, sq, sq);
-  cairo_set_source_rgb(cr, 0.85, 0.25, 0.1);
+  cairo_set_source_rgb(cr, kRoute.r, kRoute.g, kRoute.b);
   cairo_fill(cr);
 
   cairo_new_sub_path(cr);
   cairo_arc(cr, plan.home_mm.x(), plan.home_mm.y(), 2 * r, 0, 2 * std::numbers::pi);
-  cairo_set_source_rgb(cr, 0.1, 0.55, 0.2);
+  cairo_set_source_rgb(cr, kHome.r, kHome.g, kHome.b);
   canvas.set_line_px(2.0);
   cairo_stroke(cr);
   canvas.finish();

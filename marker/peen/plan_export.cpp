@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 
 #include "fonts/error.hpp"
+#include "marker/output/output_file.hpp"
 #include "marker/peen/gantry_run.hpp"
 
 namespace mark {
@@ -21,15 +22,6 @@ std::string fixed(double v, int decimals) {
   std::string s = buf;
   if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);  // no "-0.0"
   return s;
-}
-
-std::string lower_extension(const std::string& path) {
-  const std::size_t dot = path.find_last_of('.');
-  const std::size_t slash = path.find_last_of('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-  return ext;
 }
 
 }  // namespace
@@ -89,15 +81,12 @@ void write_plan_gcode(std::ostream& out, const PeenPlan& plan, const DotText& te
 void export_plan(const std::string& path, const PeenPlan& plan, const DotText& text,
                  const GantryConfig& gantry) {
   const std::string ext = lower_extension(path);
-  const bool csv = ext == "csv";
-  if (!csv && ext != "ngc" && ext != "nc" && ext != "gcode")
+  if (std::find(kPlanExtensions.begin(), kPlanExtensions.end(), ext) == kPlanExtensions.end())
     throw InputError("output file '" + path + "': the name must end in .csv, .ngc, .nc or .gcode");
-  std::ofstream out(path);
-  if (!out) throw InputError("output file '" + path + "': cannot be written");
-  if (csv) write_plan_csv(out, plan, text, gantry);
+  std::ostringstream out;
+  if (ext == ".csv") write_plan_csv(out, plan, text, gantry);
   else write_plan_gcode(out, plan, text, gantry);
-  out.flush();
-  if (!out) throw InputError("output file '" + path + "': writing failed");
+  write_file_whole(path, out.str());
 }
 
 }  // namespace mark

@@ -11,8 +11,10 @@
 // speed and acceleration (what the time model assumes), every strike
 //   M64 P0 / G4 P<strike_s> / M65 P0
 // — digital output 0 fires the pin for the strike time, then releases it. Ends with M2.
+#include <initializer_list>
 #include <ostream>
 #include <string>
+#include <string_view>
 
 #include "marker/peen/dot_text.hpp"
 #include "marker/peen/gantry.hpp"
@@ -25,8 +27,11 @@ void write_plan_csv(std::ostream& out, const PeenPlan& plan, const DotText& text
 void write_plan_gcode(std::ostream& out, const PeenPlan& plan, const DotText& text,
                       const GantryConfig& gantry);
 
-// By the file's extension: .csv, or .ngc / .nc / .gcode. Throws InputError naming the file for
-// another extension or when it cannot be written.
+// The extensions export_plan writes.
+inline const std::initializer_list<std::string_view> kPlanExtensions = {".csv", ".ngc", ".nc", ".gcode"};
+
+// By the file's extension: .csv, or .ngc / .nc / .gcode, written whole (output_file.hpp). Throws
+// InputError naming the file for another extension or when it cannot be written.
 void export_plan(const std::string& path, const PeenPlan& plan, const DotText& text,
                  const GantryConfig& gantry);
 

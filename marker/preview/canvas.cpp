@@ -7,38 +7,44 @@
 #include <cstdio>
 
 #include "fonts/error.hpp"
+#include "marker/output/output_file.hpp"
 
 namespace mark {
 namespace {
 
-bool ends_with(const std::string& s, const std::string& suffix) {
-  if (s.size() < suffix.size()) return false;
-  std::string tail = s.substr(s.size() - suffix.size());
-  std::transform(tail.begin(), tail.end(), tail.begin(), ::tolower);
-  return tail == suffix;
+// Cairo writes SVG and PNG through this into memory; the file is written whole at the end.
+cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
 }
 
 }  // namespace
 
-Canvas::Canvas(const std::string& path, const Box& view, double px_per_mm)
+Canvas::Canvas(const std::string& path, const Box& view, double px_per_mm, std::vector<LegendEntry> legend)
     : Canvas(path, static_cast<int>(std::ceil(view.width() * px_per_mm)),
-             static_cast<int>(std::ceil(view.height() * px_per_mm))) {
+             static_cast<int>(std::ceil(view.height() * px_per_mm)), std::move(legend)) {
   set_view(view, 0, 0, px_per_mm);
 }
 
-Canvas::Canvas(const std::string& path, int w, int h) : path_(path), px_per_mm_(1) {
-  if (ends_with(path, ".png")) {
+Canvas::Canvas(const std::string& path, int w, int h, std::vector<LegendEntry> legend)
+    : path_(path), legend_(std::move(legend)), px_per_mm_(1) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".png") {
     png_ = true;
-  } else if (!ends_with(path, ".svg")) {
+  } else if (ext != ".svg") {
     throw InputError("preview file '" + path + "': the name must end in .svg or .png");
   }
-  w = std::max(1, w);
+  // Wide enough for the legend to read, whatever the picture's scale.
+  w = std::max(320, w);
   h = std::max(1, h);
+  width_px_ = w;
+  height_px_ = h;
+  h += legend_height_px(legend_, w);
   if (w > 20000 || h > 20000)
     throw InputError("preview file '" + path + "': " + std::to_string(w) + "×" + std::to_string(h) +
                      " px is too large; lower the scale");
   surface_ = png_ ? cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h)
-                  : cairo_svg_surface_create(temp_path().c_str(), w, h);
+                  : cairo_svg_surface_create_for_stream(append_bytes, &bytes_, w, h);
   if (cairo_surface_status(surface_) != CAIRO_STATUS_SUCCESS) {
     cairo_surface_destroy(surface_);
     surface_ = nullptr;
@@ -53,6 +59,8 @@ Canvas::Canvas(const std::string& path, int w, int h) : path_(path), px_per_mm_(
 
 void Canvas::set_view(const Box& view, double x_px, double y_px, double px_per_mm) {
   px_per_mm_ = px_per_mm;
+  std::erase_if(panels_, [&](const PanelScale& p) { return p.x_px == x_px; });
+  panels_.push_back({x_px, std::min(view.width() * px_per_mm, width_px_ - x_px), px_per_mm});
   cairo_identity_matrix(cr_);
   cairo_reset_clip(cr_);
   cairo_rectangle(cr_, x_px, y_px, view.width() * px_per_mm, view.height() * px_per_mm);
@@ -66,11 +74,7 @@ void Canvas::set_view(const Box& view, double x_px, double y_px, double px_per_m
 Canvas::~Canvas() {
   if (cr_) cairo_destroy(cr_);
   if (surface_) cairo_surface_destroy(surface_);
-  // An unfinished preview leaves nothing behind.
-  if (!finished_) std::remove(temp_path().c_str());
 }
-
-std::string Canvas::temp_path() const { return path_ + ".part"; }
 
 void Canvas::set_line_px(double px) { cairo_set_line_width(cr_, px / px_per_mm_); }
 
@@ -84,20 +88,18 @@ void Canvas::set_dash_px(double on_px, double off_px) {
 }
 
 void Canvas::finish() {
+  draw_legend(cr_, panels_, legend_, height_px_, width_px_);
   cairo_surface_flush(surface_);
   cairo_status_t status = CAIRO_STATUS_SUCCESS;
-  // Written under a temporary name and renamed, so a failed write never leaves half a file.
   if (png_) {
-    status = cairo_surface_write_to_png(surface_, temp_path().c_str());
+    status = cairo_surface_write_to_png_stream(surface_, append_bytes, &bytes_);
   } else {
     cairo_surface_finish(surface_);
     status = cairo_surface_status(surface_);
   }
   if (status != CAIRO_STATUS_SUCCESS)
     throw InputError("preview file '" + path_ + "': " + cairo_status_to_string(status));
-  if (std::rename(temp_path().c_str(), path_.c_str()) != 0)
-    throw InputError("preview file '" + path_ + "': cannot be written");
-  finished_ = true;
+  write_file_whole(path_, bytes_);
 }
 
 }  // namespace mark

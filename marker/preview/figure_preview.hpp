@@ -1,6 +1,8 @@
 #pragma once
 // Preview of a Figure as SVG or PNG (by the file's extension): the field frame, marks as solid
-// lines, travel between strokes dashed.
+// lines, travel between strokes dashed, the circle of a circular fitting as a dashed guide, and
+// under the picture a scale bar and a legend.
+#include <optional>
 #include <string>
 
 #include "marker/layout/figure.hpp"
@@ -11,6 +13,7 @@ namespace mark {
 struct PreviewOptions {
   double px_per_mm = 0;  // 0: the field fills about 1200 px
   bool show_travel = true;
+  std::optional<CircleFit> circle;  // circular fitting: the circle the letters stand on
 };
 
 // Throws InputError naming the file if it cannot be written or its extension is not .svg/.png.

@@ -12,6 +12,28 @@ namespace {
 
 constexpr double kMaxWidthPx = 2400, kMaxHeightPx = 1600;
 
+constexpr Rgb kJump{0.9, 0.5, 0.1}, kJoin{0.2, 0.6, 0.9}, kRun{0.1, 0.3, 0.9}, kDwell{0.9, 0.1, 0.1},
+    kDose{0.35, 0.35, 0.35};
+
+std::vector<LegendEntry> legend(const Plan& plan) {
+  auto has = [&](CommandRole role) {
+    for (const Command& c : plan.commands)
+      if (c.role == role && c.kind != CommandKind::dwell) return true;
+    return false;
+  };
+  std::vector<LegendEntry> l{{"dose the beam left (darker = more)", kDose, LegendMark::area}};
+  if (has(CommandRole::jump)) l.push_back({"jumps (laser off)", kJump, LegendMark::dashed});
+  if (has(CommandRole::run_in) || has(CommandRole::run_out))
+    l.push_back({"blanking run-in / run-out (laser off)", kRun, LegendMark::line});
+  if (has(CommandRole::blank_join)) l.push_back({"blanking joins (laser off)", kJoin, LegendMark::dashed});
+  for (const Command& c : plan.commands)
+    if (c.kind == CommandKind::dwell) {
+      l.push_back({"delay dwells", kDwell, LegendMark::dot});
+      break;
+    }
+  return l;
+}
+
 Box grown(const Box& b, double by) {
   Box g;
   g.add(b.min - Point(by, by));
@@ -56,14 +78,13 @@ void paint_dose(Canvas& canvas, const Box& view, const DoseRaster& dose, int w, 
   cairo_surface_destroy(img);
 }
 
-void stroke_role(Canvas& canvas, const Plan& plan, CommandRole role, double r, double g, double b,
-                 bool dashed) {
+void stroke_role(Canvas& canvas, const Plan& plan, CommandRole role, const Rgb& colour, bool dashed) {
   cairo_t* cr = canvas.cr();
   bool any = false;
   for (const Command& c : plan.commands)
     if (c.role == role && c.kind != CommandKind::dwell) append_element(cr, c.path), any = true;
   if (!any) return;
-  cairo_set_source_rgba(cr, r, g, b, 0.8);
+  cairo_set_source_rgba(cr, colour.r, colour.g, colour.b, 0.8);
   canvas.set_line_px(1.0);
   canvas.set_dash_px(dashed ? 4 : 0, 3);
   cairo_stroke(cr);
@@ -78,21 +99,21 @@ void write_mark_preview(const Plan& plan, const DoseRaster& dose, const std::str
   // At most one image pixel per raster pixel, and no larger than the size limits.
   const double scale = std::min({1.0 / dose.pixel_mm(), kMaxWidthPx / view.width(),
                                  kMaxHeightPx / view.height()});
-  Canvas canvas(path, view, scale);
+  Canvas canvas(path, view, scale, legend(plan));
   const int w = static_cast<int>(std::ceil(view.width() * scale));
   const int h = static_cast<int>(std::ceil(view.height() * scale));
   paint_dose(canvas, view, dose, w, h);
-  stroke_role(canvas, plan, CommandRole::jump, 0.9, 0.5, 0.1, true);
-  stroke_role(canvas, plan, CommandRole::blank_join, 0.2, 0.6, 0.9, true);
-  stroke_role(canvas, plan, CommandRole::run_in, 0.1, 0.3, 0.9, false);
-  stroke_role(canvas, plan, CommandRole::run_out, 0.1, 0.3, 0.9, false);
+  stroke_role(canvas, plan, CommandRole::jump, kJump, true);
+  stroke_role(canvas, plan, CommandRole::blank_join, kJoin, true);
+  stroke_role(canvas, plan, CommandRole::run_in, kRun, false);
+  stroke_role(canvas, plan, CommandRole::run_out, kRun, false);
   cairo_t* cr = canvas.cr();
   for (const Command& c : plan.commands)
     if (c.kind == CommandKind::dwell) {
       cairo_new_sub_path(cr);
       cairo_arc(cr, c.start().x(), c.start().y(), 2.0 / scale, 0, 2 * M_PI);
     }
-  cairo_set_source_rgba(cr, 0.9, 0.1, 0.1, 0.7);
+  cairo_set_source_rgba(cr, kDwell.r, kDwell.g, kDwell.b, 0.7);
   cairo_fill(cr);
   canvas.finish();
 }

@@ -1,16 +1,34 @@
-// The dose image: a PNG of the used area, dark where the dose is high, y up.
+// The dose image: a PNG of the used area, dark where the dose is high, y up (decoded back from
+// the bytes encode_dose_png makes; the file is written by marker/output, tested there).
 #include "driver/dose_png.hpp"
 
 #include <cairo.h>
 #include <gtest/gtest.h>
 
 #include <cstdint>
-#include <filesystem>
+#include <algorithm>
+#include <string>
 
-#include "driver/device_error.hpp"
 
 namespace mark {
 namespace {
+
+// The encoded PNG read back through cairo.
+cairo_surface_t* decode(const std::string& png) {
+  struct Reader {
+    const std::string& bytes;
+    std::size_t at = 0;
+  } reader{png};
+  return cairo_image_surface_create_from_png_stream(
+      [](void* closure, unsigned char* data, unsigned int length) {
+        auto* r = static_cast<Reader*>(closure);
+        if (r->bytes.size() - r->at < length) return CAIRO_STATUS_READ_ERROR;
+        std::copy_n(r->bytes.data() + r->at, length, data);
+        r->at += length;
+        return CAIRO_STATUS_SUCCESS;
+      },
+      &reader);
+}
 
 std::uint32_t grey_at(cairo_surface_t* s, int x, int y) {
   const auto* row = cairo_image_surface_get_data(s) + y * cairo_image_surface_get_stride(s);
@@ -21,9 +39,7 @@ TEST(DosePng, WritesTheUsedAreaDarkWhereDosed) {
   DoseRaster dose(0.005);
   dose.deposit_segment({0, 0}, {0.5, 0}, 1.0);       // horizontal line at the bottom
   dose.deposit_segment({0, 0.2}, {0, 0.3}, 0.2);     // vertical line above its left end, same mm dose
-  const auto path = std::filesystem::path(MARKER_BINARY_DIR) / "dose_png_test.png";
-  write_dose_png(dose, path.string(), {.margin_px = 4});
-  cairo_surface_t* img = cairo_image_surface_create_from_png(path.c_str());
+  cairo_surface_t* img = decode(encode_dose_png(dose, {.margin_px = 4}));
   ASSERT_EQ(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
   const int w = cairo_image_surface_get_width(img), h = cairo_image_surface_get_height(img);
   // Tiles of 64 px cover 0..0.5 mm × 0..0.3 mm: 2 × 1 tiles (one tile row, y 0..0.315 mm).
@@ -42,19 +58,11 @@ TEST(DosePng, WritesTheUsedAreaDarkWhereDosed) {
 TEST(DosePng, DownsamplesLargeRasters) {
   DoseRaster dose(0.005);
   dose.deposit_segment({0, 0}, {20, 0}, 1.0);  // 4000 px long
-  const auto path = std::filesystem::path(MARKER_BINARY_DIR) / "dose_png_large.png";
-  write_dose_png(dose, path.string(), {.margin_px = 0, .max_side_px = 1000});
-  cairo_surface_t* img = cairo_image_surface_create_from_png(path.c_str());
+  cairo_surface_t* img = decode(encode_dose_png(dose, {.margin_px = 0, .max_side_px = 1000}));
   ASSERT_EQ(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
   // 63 tiles = 4032 px wide; the smallest integer factor that fits 1000 is 5.
   EXPECT_EQ(cairo_image_surface_get_width(img), 4032 / 5 + 1);
   cairo_surface_destroy(img);
-}
-
-TEST(DosePng, UnwritablePathIsADeviceError) {
-  DoseRaster dose;
-  dose.deposit({0, 0}, 1);
-  EXPECT_THROW(write_dose_png(dose, "/nonexistent-dir/x.png"), DeviceError);
 }
 
 }  // namespace

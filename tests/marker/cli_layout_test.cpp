@@ -2,6 +2,7 @@
 // non-zero exit that leave no file behind.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -35,7 +36,7 @@ TEST(CliLayout, JsonHasGlyphsWithElementsInMillimetres) {
     }
     if (e["kind"] == "ellipse") {
       has_curve = true;
-      for (const char* k : {"center", "rx", "ry", "rotation_deg", "start_param", "end_param", "ccw"})
+      for (const char* k : {"center", "rx", "ry", "rotation_deg", "start_deg", "end_deg", "ccw"})
         EXPECT_TRUE(e.contains(k)) << k;
     }
   }
@@ -44,6 +45,28 @@ TEST(CliLayout, JsonHasGlyphsWithElementsInMillimetres) {
   const double h = j["bounds"]["max"][1].get<double>() - j["bounds"]["min"][1].get<double>();
   EXPECT_NEAR(h, 4.0, 0.2);
   EXPECT_NEAR(j["bounds"]["min"][0].get<double>(), -5.0, 1.0);
+}
+
+// The ellipse's angles are degrees, as their names say: the parametric point at start_deg and
+// end_deg (rotated by rotation_deg about the centre) is the element's start and end point.
+TEST(CliLayout, EllipseAnglesAreDegrees) {
+  const Result r = run({"layout", "O", "--height", "4", "--width-factor", "0.6", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  int ellipses = 0;
+  for (const auto& e : j["glyphs"][0]["elements"]) {
+    if (e["kind"] != "ellipse") continue;
+    ++ellipses;
+    const double rad = M_PI / 180, rot = e["rotation_deg"].get<double>() * rad;
+    const double cx = e["center"][0], cy = e["center"][1], rx = e["rx"], ry = e["ry"];
+    for (const char* which : {"start", "end"}) {
+      const double t = e[std::string(which) + "_deg"].get<double>() * rad;
+      const double px = rx * std::cos(t), py = ry * std::sin(t);
+      EXPECT_NEAR(cx + px * std::cos(rot) - py * std::sin(rot), e[which][0].get<double>(), 1e-9) << which;
+      EXPECT_NEAR(cy + px * std::sin(rot) + py * std::cos(rot), e[which][1].get<double>(), 1e-9) << which;
+    }
+  }
+  EXPECT_GT(ellipses, 0) << "a narrowed O is drawn with elliptical arcs";
 }
 
 TEST(CliLayout, PreviewWritesSvgAndPng) {
@@ -72,7 +95,7 @@ TEST(CliLayout, RefusalsAreOneLineErrors) {
       {{"preview", "TOO WIDE FOR THE FIELD", "--height", "20", "-o", out.string()}, "leaves the field"},
       {{"preview", "X", "--font", "no-such-font", "-o", out.string()}, "unknown font 'no-such-font'"},
       {{"preview", "\xc3\xa9", "-o", out.string()}, "no glyph for 'é' (U+00E9)"},
-      {{"preview", "AB", "--height", "-1", "-o", out.string()}, "character height must be a positive number"},
+      {{"preview", "AB", "--height", "-1", "-o", out.string()}, "marker: --height: -1 is outside the range 0.01 to 10000 mm"},
       {{"preview", "AB", "--circle", "0,0", "-o", out.string()}, "--circle '0,0'"},
       {{"preview", "AB", "-o", temp_file("x.jpg").string()}, "must end in .svg or .png"},
       {{"preview", "   ", "-o", out.string()}, "has nothing to mark"},
@@ -93,6 +116,44 @@ TEST(CliLayout, FontsListsBuiltinAndDebianFonts) {
   EXPECT_NE(r.out.find("builtin"), std::string::npos);
   EXPECT_NE(r.out.find("rowmans"), std::string::npos);
   EXPECT_NE(r.out.find("standard  lff"), std::string::npos);
+}
+
+// The JSON lists the same fonts as the text, marks names several files share, and every font it
+// calls unique opens by that name.
+TEST(CliLayout, FontsJsonMarksSharedNames) {
+  const Result r = run({"fonts", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_GE(j["fonts"].size(), 1u);
+  EXPECT_EQ(j["fonts"][0]["name"], "builtin");
+  EXPECT_GT(j["fonts"][0]["glyphs"].get<int>(), 90);
+  const Result text = run({"fonts"});
+  EXPECT_EQ(static_cast<std::size_t>(std::count(text.out.begin(), text.out.end(), '\n')), j["fonts"].size());
+  int checked = 0;
+  for (const auto& f : j["fonts"]) {
+    if (f["format"] != "jhf" || checked >= 3) continue;
+    const std::string name = f["name"];
+    const Result open = run({"layout", "H", "--font", name});
+    EXPECT_EQ(open.code, f["unique"].get<bool>() ? 0 : 1) << name << ": " << open.err;
+    ++checked;
+  }
+}
+
+TEST(CliLayout, PreviewJsonDescribesWhatWasDrawn) {
+  const fs::path out = temp_file("described.svg");
+  const Result r = run({"preview", "AB\\nC", "--height", "4", "-o", out.string(), "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["output"], out.string());
+  EXPECT_EQ(j["text"], "AB\nC");
+  EXPECT_EQ(j["glyphs"], 3);
+  EXPECT_NEAR(j["bounds_mm"]["y_max"].get<double>(), 4.0, 0.2);
+  EXPECT_TRUE(fs::exists(out));
+  // The same figure as `layout --json`: its bounds and its lit length.
+  const Result l = run({"layout", "AB\\nC", "--height", "4", "--json"});
+  const auto fig = nlohmann::json::parse(l.out);
+  EXPECT_DOUBLE_EQ(j["bounds_mm"]["x_min"].get<double>(), fig["bounds"]["min"][0].get<double>());
+  EXPECT_DOUBLE_EQ(j["bounds_mm"]["y_min"].get<double>(), fig["bounds"]["min"][1].get<double>());
 }
 
 }  // namespace

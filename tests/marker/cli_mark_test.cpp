@@ -26,7 +26,7 @@ TEST(CliMark, UnwritableOutputIsRefusedBeforeAnythingIsMarked) {
     EXPECT_EQ(r.code, 1) << option;
     EXPECT_EQ(r.out, "") << option << ": nothing was marked, so no figures";
     EXPECT_EQ(r.err, std::string("marker: ") + option +
-                         " /nonexistent-folder/x.png: cannot write there: No such file or directory\n");
+                         " '/nonexistent-folder/x.png': directory '/nonexistent-folder': No such file or directory\n");
   }
 }
 
@@ -73,8 +73,8 @@ TEST(CliMark, InjectedFaultsEndTheJobWithTheirStatusAndSayWhereTheyStopped) {
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["outcome"], c.outcome);
     EXPECT_EQ(j["stopped_at"], 900);
-    EXPECT_GT(j["ink_marked"].get<double>(), 0.0);
-    EXPECT_LT(j["ink_marked"].get<double>(), 1.0);
+    EXPECT_GT(j["ink_marked_fraction"].get<double>(), 0.0);
+    EXPECT_LT(j["ink_marked_fraction"].get<double>(), 1.0);
     EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("% of the ink marked, laser off"), std::string::npos) << r.err;
   }
@@ -123,7 +123,7 @@ TEST(CliMark, CtrlCPutsTheLaserOutWithinOneBlockAndExits130) {
   EXPECT_EQ(j["outcome"], "aborted");
   EXPECT_LE(j["stop_latency_samples"].get<int>(), 100);
   EXPECT_GT(j["stopped_at"].get<int>(), 0);
-  EXPECT_LT(j["ink_marked"].get<double>(), 1.0);
+  EXPECT_LT(j["ink_marked_fraction"].get<double>(), 1.0);
   EXPECT_EQ(j["samples"].get<int>(), j["stopped_at"].get<int>() + 1);  // then one safe sample
 }
 

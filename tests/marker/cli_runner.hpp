@@ -26,6 +26,14 @@ inline CliResult run_cli(std::vector<std::string> args) {
   return {code, testing::internal::GetCapturedStdout(), testing::internal::GetCapturedStderr()};
 }
 
+// A per-test temporary folder, empty.
+inline std::filesystem::path fresh_temp_dir(const std::string& folder) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / folder;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 // A path in a per-suite temporary folder, with no file there yet.
 inline std::filesystem::path fresh_temp_file(const std::string& folder, const std::string& name) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / folder;

@@ -99,7 +99,29 @@ TEST(PeenCli, StrokeFontsBecomeContinuousDots) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["characters"], 4);  // the space has no dots
   EXPECT_DOUBLE_EQ(j["pitch_mm"].get<double>(), 0.4);
-  EXPECT_GT(j["dots"].get<int>(), 40);
+  // Dots at most a pitch apart along every stroke: at least length / pitch of them, and no more
+  // than one per pitch plus both ends of every element.
+  const fs::path svg = temp_file("sn42.svg");
+  const Result layout = run({"preview", "SN 42", "--height", "4", "--align", "center", "-o", svg.string(), "--json"});
+  ASSERT_EQ(layout.code, 0) << layout.err;
+  const auto l = nlohmann::json::parse(layout.out);
+  const double per_pitch = l["mark_length_mm"].get<double>() / 0.4;
+  EXPECT_GE(j["dots"].get<double>(), per_pitch);
+  EXPECT_LE(j["dots"].get<double>(), per_pitch + l["elements"].get<double>() + 1);
+}
+
+// With its defaults (5x7, 5 mm, centred) an ordinary 12-character text fits the field, centred.
+TEST(PeenCli, DefaultsFitOrdinaryText) {
+  const Result r = run({"peen", "ABCDEFGHIJKL", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["characters"], 12);
+  // Pitch 5/6 mm; each character advances 6 pitches (5 columns and a gap), centred: the line of
+  // 72 pitches starts at −36; the dots run from A's first column to L's fifth, 70 pitches.
+  const double pitch = 5.0 / 6;
+  const auto& w = j["window_mm"];
+  EXPECT_NEAR(w["x_min"].get<double>(), -36 * pitch, 1e-9);
+  EXPECT_NEAR(w["x_max"].get<double>(), 34 * pitch, 1e-9);
 }
 
 TEST(PeenCli, BadInputIsOneLineAndExitOne) {

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -195,6 +196,69 @@ TEST(GcodeCli, ToolMeasureReportsDiameterAndWear) {
   const CliResult bad = run_cli({"tool-measure", "/nonexistent.png", "--pixel-size", "5"});
   EXPECT_EQ(bad.code, 1);
   EXPECT_NE(bad.err.find("marker: /nonexistent.png: cannot open"), std::string::npos) << bad.err;
+}
+
+// The tool measurement as JSON, the same figures as the text, and the text says from which axis
+// and in which direction the form deviation's angle is counted.
+TEST(GcodeCli, ToolMeasureJsonAndTheAnglesAxis) {
+  Render rr;
+  rr.size = 240;
+  const Point c(120.3, 119.6);
+  const double radius = 92;
+  const GrayImage img = chipped_disk(rr, c, radius, 30);  // a chip 8 px deep at 30°, y up
+  const std::string image = write_png(img, "chipped_json");
+  const CliResult j = run_cli({"tool-measure", image, "--pixel-size", "5", "--nominal-diameter", "1", "--json"});
+  ASSERT_EQ(j.code, 0) << j.err;
+  const auto m = nlohmann::json::parse(j.out);
+  EXPECT_NEAR(m["diameter_mm"].get<double>(), 2 * radius * 0.005, 0.005);
+  EXPECT_NEAR(m["center_x_mm"].get<double>(), c.x() * 0.005, 0.002);
+  EXPECT_NEAR(m["center_y_mm"].get<double>(), c.y() * 0.005, 0.002);
+  EXPECT_NEAR(m["form_deviation_angle_deg"].get<double>(), 30, 6);
+  EXPECT_NEAR(m["form_deviation_mm"].get<double>(), 8 * 0.005, 1 * 0.005);
+  EXPECT_NEAR(m["radius_deviation_mm"].get<double>(), radius * 0.005 - 0.5, 0.002);
+  EXPECT_EQ(m["image"], image);
+  const CliResult t = run_cli({"tool-measure", image, "--pixel-size", "5"});
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_NEAR(number_after(t.out, "diameter "), m["diameter_mm"].get<double>(), 1e-4);
+  EXPECT_NE(t.out.find("° (counter-clockwise from the image's +x axis (pointing right), y up)"), std::string::npos)
+      << t.out;
+}
+
+// A 40-line text: the title carries every line, each in its own comment, and LinuxCNC runs it
+// (it refused the one-line title with "Command too long").
+TEST(GcodeCli, FortyLineTextRunsInEveryDialect) {
+  std::string text;
+  for (int k = 0; k < 40; ++k) text += (k ? "\\n" : "") + std::string("L") + std::to_string(k) + " ABCDEFGHIJKLMNOPQRSTUVWXYZ";
+  for (const char* dialect : {"linuxcnc", "fanuc", "plain"}) {
+    const std::string file = out_path(std::string("forty_") + dialect + ".ngc");
+    const CliResult r = run_cli({"gcode", text, "--height", "1", "--x", "-50", "--y", "50", "--field", "200",
+                                 "--dialect", dialect, "-o", file, "--json"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const std::string program = slurp(file);
+    EXPECT_EQ(j["lines"].get<std::size_t>(), static_cast<std::size_t>(std::count(program.begin(), program.end(), '\n')));
+    EXPECT_EQ(j["dialect"], dialect);
+    EXPECT_NE(program.find("L39 ABCDEFGHIJKLMNOPQRSTUVWXYZ)"), std::string::npos) << dialect;
+    const Rs274Run run = run_rs274(program, std::string("forty_") + dialect);
+    EXPECT_EQ(run.exit_code, 0) << dialect << ": " << run.errors;
+  }
+}
+
+// Raised letters that run into each other at the default stroke width (the tool diameter) get a
+// warning naming them and what to change; with room between them, none.
+TEST(GcodeCli, WarnsWhenRaisedLettersRunIntoEachOther) {
+  const std::string file = out_path("touching.ngc");
+  const CliResult touching = run_cli({"gcode", "AB", "--mode", "protrusion", "--height", "2", "-o", file, "--json"});
+  ASSERT_EQ(touching.code, 0) << touching.err;
+  EXPECT_NE(touching.err.find("marker: warning: raised letters 'A' and 'B' run into each other at stroke width 1 mm"),
+            std::string::npos)
+      << touching.err;
+  EXPECT_NE(touching.err.find("raise --gap or --height, or lower --stroke-width"), std::string::npos);
+  const auto j = nlohmann::json::parse(touching.out);
+  ASSERT_FALSE(j["warnings"].empty());
+  const CliResult apart = run_cli({"gcode", "AB", "--mode", "protrusion", "--height", "2", "--gap", "1", "-o", file});
+  ASSERT_EQ(apart.code, 0) << apart.err;
+  EXPECT_EQ(apart.err.find("run into each other"), std::string::npos) << apart.err;
 }
 
 TEST(GcodeCli, BadInputIsOneLineAndNoFile) {

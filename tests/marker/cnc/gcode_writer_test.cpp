@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <regex>
@@ -134,6 +135,78 @@ TEST(GcodeWriter, RefusesLinesThatWouldEndTheProgram) {
   EXPECT_THROW(write_gcode(arc_letter(), o), InputError);
   o.header.clear();
   o.program_number = 10000;
+  EXPECT_THROW(write_gcode(arc_letter(), o), InputError);
+}
+
+// The LinuxCNC limit is measured, not assumed: rs274 reads a 252-character line and refuses one of
+// 253 with "Command too long".
+TEST(GcodeWriter, LinuxcncLineLimitIsWhatRs274Accepts) {
+  const std::size_t limit = dialect_limits(Dialect::linuxcnc).line_chars;
+  auto program = [](std::size_t chars) {
+    return "(" + std::string(chars - 2, 'A') + ")\nG21 G90 G0 X1. Y2.\nM2\n";
+  };
+  const test::Rs274Run fits = test::run_rs274(program(limit), "line_limit_fits");
+  EXPECT_EQ(fits.exit_code, 0) << fits.errors;
+  const test::Rs274Run too_long = test::run_rs274(program(limit + 1), "line_limit_too_long");
+  EXPECT_NE(too_long.exit_code, 0);
+  EXPECT_NE(too_long.errors.find("Command too long"), std::string::npos) << too_long.errors;
+}
+
+// A long title wraps into comment lines within every dialect's limit, keeps every character,
+// one comment per line of the title, and the programs still run.
+TEST(GcodeWriter, LongTitlesWrapWithinEachDialectsLines) {
+  std::string title;
+  for (int k = 0; k < 40; ++k) {
+    if (k) title += '\n';
+    title += "LINE " + std::to_string(k) + " ";
+    title.append(90, 'W');
+  }
+  title += "\n" + std::string(600, 'Z');  // one word longer than any line
+  GcodeOptions o;
+  o.title = title;
+  for (Dialect d : {Dialect::linuxcnc, Dialect::fanuc, Dialect::plain}) {
+    o.dialect = d;
+    const DialectLimits limits = dialect_limits(d);
+    const std::string program = write_gcode(arc_letter(), o);
+    std::istringstream in(program);
+    std::string line, comments;
+    std::size_t n = 0;
+    while (std::getline(in, line)) {
+      EXPECT_LE(line.size(), limits.line_chars) << to_string(d) << " line " << n;
+      if (d == Dialect::fanuc && n == 1) {
+        EXPECT_EQ(line.rfind("O0001 (", 0), 0u) << line;
+        EXPECT_LE(line.size() - 7 - 1, limits.program_name_chars) << line;
+        line = line.substr(6);
+      }
+      if (line.size() > 2 && line.front() == '(' && line.find_first_of("LWZ") == 1)
+        comments += line.substr(1, line.size() - 2);
+      ++n;
+    }
+    // Every character survives (a wrap drops only the space it breaks at).
+    for (int k = 0; k < 40; ++k)
+      EXPECT_NE(comments.find("LINE " + std::to_string(k)), std::string::npos) << to_string(d) << " " << k;
+    EXPECT_EQ(std::count(comments.begin(), comments.end(), 'W'), 40 * 90) << to_string(d);
+    EXPECT_EQ(std::count(comments.begin(), comments.end(), 'Z'), 600) << to_string(d);
+    const test::Rs274Run run = test::run_rs274(program, "long_title_" + std::string(to_string(d)));
+    EXPECT_EQ(run.exit_code, 0) << to_string(d) << ": " << run.errors;
+  }
+}
+
+TEST(GcodeWriter, RefusesUserLinesLongerThanTheDialectsLimit) {
+  GcodeOptions o;
+  o.dialect = Dialect::plain;
+  o.header = {std::string(79, 'G')};
+  EXPECT_NO_THROW(write_gcode(arc_letter(), o));
+  o.header = {std::string(80, 'G')};
+  try {
+    write_gcode(arc_letter(), o);
+    FAIL() << "an 80-character grbl line was written";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "header line 'GGGGGGGGGGGGGGGGGGGG…' has 80 characters, more than the plain dialect's 79 per line");
+  }
+  o.dialect = Dialect::linuxcnc;
+  EXPECT_NO_THROW(write_gcode(arc_letter(), o));
+  o.footer = {std::string(253, 'G')};
   EXPECT_THROW(write_gcode(arc_letter(), o), InputError);
 }
 

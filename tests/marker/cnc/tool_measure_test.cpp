@@ -116,14 +116,9 @@ TEST(ToolMeasure, ChippedEdgeIsReportedAsFormDeviation) {
   r.blur_px = 1.0;
   r.noise = 0.02;
   const Point c(130.4, 129.8);
-  const double radius = 100, bite = 14;
-  // A round chip at 30° (y up), 8 px deep: its centre 6 px outside the edge.
-  const Point chip = c + (radius + 6) * Point(std::cos(kPi / 6), -std::sin(kPi / 6));
-  const GrayImage img = render(
-      r, [&](double x, double y) { return (Point(x, y) - c).norm() <= radius && (Point(x, y) - chip).norm() > bite; },
-      [&](double x, double y) {
-        return std::abs((Point(x, y) - c).norm() - radius) < 1.5 || std::abs((Point(x, y) - chip).norm() - bite) < 1.5;
-      });
+  const double radius = 100;
+  // A round chip at 30° (y up), 8 px deep.
+  const GrayImage img = chipped_disk(r, c, radius, 30);
   ToolMeasureOptions o;
   o.pixel_size_um = 5;
   o.nominal_diameter_mm = 1.0;

@@ -68,6 +68,17 @@ GrayImage disk(const Render& r, Point c, double radius) {
       [=](double x, double y) { return std::abs((Point(x, y) - c).norm() - radius) < 1.5; });
 }
 
+GrayImage chipped_disk(const Render& r, Point c, double radius, double chip_deg) {
+  const double a = chip_deg * M_PI / 180;
+  const Point chip = c + (radius + 6) * Point(std::cos(a), -std::sin(a));
+  const double bite = 14;
+  return render(
+      r, [=](double x, double y) { return (Point(x, y) - c).norm() <= radius && (Point(x, y) - chip).norm() > bite; },
+      [=](double x, double y) {
+        return std::abs((Point(x, y) - c).norm() - radius) < 1.5 || std::abs((Point(x, y) - chip).norm() - bite) < 1.5;
+      });
+}
+
 std::string write_pgm(const GrayImage& img, const std::string& name) {
   const auto path = std::filesystem::path(MARKER_BINARY_DIR) / "tool_images" / (name + ".pgm");
   std::filesystem::create_directories(path.parent_path());

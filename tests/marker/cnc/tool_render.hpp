@@ -23,6 +23,9 @@ struct Render {
 GrayImage render(const Render& r, const std::function<bool(double, double)>& inside,
                  const std::function<bool(double, double)>& near_edge);
 GrayImage disk(const Render& r, Point center, double radius);
+// The disk with a round chip bitten out of its edge at chip_deg (counter-clockwise from +x, y up),
+// 8 px deep: a chip of radius 14 px centred 6 px outside the edge.
+GrayImage chipped_disk(const Render& r, Point center, double radius, double chip_deg);
 
 // Under <build>/tool_images/; return the path.
 std::string write_pgm(const GrayImage& img, const std::string& name);

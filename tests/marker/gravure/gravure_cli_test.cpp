@@ -87,23 +87,23 @@ TEST(GravureCli, PreviewShowsIntendedAndEngravedSideBySide) {
 
 TEST(GravureCli, BadOptionsAreOneLineErrors) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
-      {{"--cell-rate", "50000"}, "marker: --cell-rate 50000: outside 500 .. 20000 Hz\n"},
-      {{"--cell-rate", "6250.5"}, "marker: --cell-rate 6250.5: must be a whole number of hertz\n"},
-      {{"--screen", "2"}, "marker: --screen along 2: outside 5 .. 1000 lines/cm\n"},
+      {{"--cell-rate", "50000"}, "marker: --cell-rate: 50000 is outside the range 500 to 20000\n"},
+      {{"--cell-rate", "6250.5"}, "marker: --cell-rate: '6250.5' is not a whole number (range: 500 to 20000)\n"},
+      {{"--screen", "2"}, "marker: --screen along: 2 is outside the range 5 to 1000 lines/cm\n"},
       {{"--screen", "70xx"}, "marker: --screen '70xx': expected LINES_PER_CM or ALONGxACROSS, e.g. 70 or 70x60\n"},
-      {{"--ct-depth", "900"}, "marker: --ct-depth 900: outside 1 .. 200 µm\n"},
-      {{"--lw-gain", "0"}, "marker: --lw-gain 0: outside 0.1 .. 5\n"},
-      {{"--lift", "-1"}, "marker: --lift -1: outside 0 .. 100 µm\n"},
-      {{"--stylus-angle", "200"}, "marker: --stylus-angle 200: outside 60 .. 160 deg\n"},
-      {{"--resolution", "-3"}, "marker: --resolution -3: outside 0.5 .. 10000 px/mm\n"},
+      {{"--ct-depth", "900"}, "marker: --ct-depth: 900 is outside the range 1 to 200 µm\n"},
+      {{"--lw-gain", "0"}, "marker: --lw-gain: 0 is outside the range 0.1 to 5\n"},
+      {{"--lift", "-1"}, "marker: --lift: -1 is outside the range 0 to 100 µm\n"},
+      {{"--stylus-angle", "200"}, "marker: --stylus-angle: 200 is outside the range 60 to 160 degrees\n"},
+      {{"--resolution", "-3"}, "marker: --resolution: -3 is outside the range 0, or 0.5 to 10000 px/mm\n"},
       {{"--head", "1800:0.06"}, "marker: --head '1800:0.06': expected FREQ_HZ:DAMPING:GAIN[,FREQ_HZ:DAMPING:GAIN...], e.g. 1800:0.06:0.8,5500:0.04:0.2\n"},
-      {{"--head", "1800:1.2:0.8"}, "marker: --head resonance 1 damping 1.2: outside 0.001 .. 0.99\n"},
-      {{"--notch", "90000:0.05:12"}, "marker: --notch frequency 90000: outside 1 .. 50000 Hz\n"},
-      {{"--notch", "1800:0.05:80"}, "marker: --notch depth 80: outside 0 .. 60 dB\n"},
+      {{"--head", "1800:1.2:0.8"}, "marker: --head resonance 1 damping: 1.2 is outside the range 0.001 to 0.99\n"},
+      {{"--notch", "90000:0.05:12"}, "marker: --notch frequency: 90000 is outside the range 1 to 50000 Hz\n"},
+      {{"--notch", "1800:0.05:80"}, "marker: --notch depth: 80 is outside the range 0 to 60 dB\n"},
       {{"--emphasis", "5500:0.5:x:0.7"}, "marker: --emphasis '5500:0.5:x:0.7': 'x' is not a number; expected FREQ_HZ:DAMPING:CORNER_HZ:CORNER_DAMPING, e.g. 5500:0.5:20000:0.707\n"},
       {{"--tune", "maybe"}, "marker: --tune 'maybe': expected auto, nominal or off\n"},
-      {{"--target", "5000"}, "marker: --target 5000: outside 11000 .. 45000 Hz\n"},
-      {{"--sense-noise", "11"}, "marker: --sense-noise 11: outside 0 .. 10 µm\n"},
+      {{"--target", "5000"}, "marker: --target: 5000 is outside the range 11000 to 45000 Hz\n"},
+      {{"--sense-noise", "11"}, "marker: --sense-noise: 11 is outside the range 0 to 10 µm\n"},
   };
   for (const auto& [options, message] : cases) {
     std::vector<std::string> args{"gravure", files().image};
@@ -124,7 +124,7 @@ TEST(GravureCli, NothingIsWrittenWhenTheJobFails) {
   EXPECT_EQ(wrong_mask.code, 1);
   const CliResult bad_preview = run_cli({"gravure", files().image, "--preview", "/nonexistent-dir/p.png"});
   EXPECT_EQ(bad_preview.code, 1);
-  EXPECT_NE(bad_preview.err.find("preview file '/nonexistent-dir/p.png'"), std::string::npos) << bad_preview.err;
+  EXPECT_NE(bad_preview.err.find("output file '/nonexistent-dir/p.png'"), std::string::npos) << bad_preview.err;
 }
 
 }  // namespace

@@ -139,7 +139,7 @@ TEST(BiquadCascade, RefusesImpossibleSections) {
     BiquadCascade({{notch_section(1800, 0.06, 10), {SectionKind::emphasis, 5000, -1, 9000, 0.7}}, 1});
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "filter section 2 (emphasis) zero damping -1: outside 0 .. 10");
+    EXPECT_STREQ(e.what(), "filter section 2 (emphasis) zero damping: -1 is outside the range 0 to 10");
   }
 }
 

@@ -37,7 +37,7 @@ TEST_F(JobCli, NewThenCheckRoundTrip) {
   EXPECT_EQ(j["serials"]["serial"], 41);
   // 800 mm/s at 40 kHz: pulses 20 µm apart, half the 40 µm spot overlapping.
   EXPECT_DOUBLE_EQ(j["objects"][0]["pulse_spacing_um"].get<double>(), 20.0);
-  EXPECT_DOUBLE_EQ(j["objects"][0]["pulse_overlap"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(j["objects"][0]["pulse_overlap_fraction"].get<double>(), 0.5);
   EXPECT_EQ(j["objects"][0]["glyphs"], 17);
   // Checking wrote nothing: no store next to the job.
   EXPECT_FALSE(std::filesystem::exists(dir / "bracket.serials.sqlite"));

@@ -1,0 +1,56 @@
+// libFuzzer target for the option-value parsers every numeric option goes through
+// (marker/cli/option_values.hpp, option_ranges.hpp): one number, and "A,B,C" / "AxB" lists. The
+// input is either refused with an InputError or yields the promised count of numbers, and a
+// number the range check lets through is finite and inside the range.
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "fonts/error.hpp"
+#include "marker/cli/option_ranges.hpp"
+#include "marker/cli/option_values.hpp"
+
+namespace {
+
+[[noreturn]] void broken(const char* what, double v) {
+  std::fprintf(stderr, "fuzz invariant broken: %s (%g)\n", what, v);
+  std::abort();
+}
+
+void check(double v, const mark::Range& range) {
+  try {
+    mark::cli::check_range("--fuzz", v, range);
+  } catch (const mark::InputError&) {
+    if (range.contains(v)) broken("a value inside the range was refused", v);
+    return;
+  }
+  if (!std::isfinite(v) || !range.contains(v)) broken("a value outside the range was accepted", v);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  const mark::Range ranges[] = {{-360, 360, "degrees"}, {0, 1000, "mm", true}, {1, 100000, "rpm", false, true}};
+  if (const auto v = mark::cli::parse_number(text))
+    for (const auto& r : ranges) check(*v, r);
+  // A whole number is written with digits and an optional sign only, and means what strtoll says.
+  if (const auto w = mark::cli::parse_whole_number(text)) {
+    const std::size_t first = text[0] == '+' || text[0] == '-' ? 1 : 0;
+    if (text.find_first_not_of("0123456789", first) != std::string::npos)
+      broken("a whole number with more than digits", static_cast<double>(*w));
+    if (std::strtoll(text.c_str(), nullptr, 10) != *w) broken("a whole number read differently", static_cast<double>(*w));
+  }
+  for (const auto& [separators, count] : {std::pair<const char*, std::size_t>{",", 3}, {"xX", 2}}) {
+    try {
+      const auto values = mark::cli::parse_numbers("--fuzz", text, separators, count, "the format");
+      if (values.size() != count) broken("wrong count of numbers", static_cast<double>(values.size()));
+      for (double v : values)
+        for (const auto& r : ranges) check(v, r);
+    } catch (const mark::InputError&) {
+    }
+  }
+  return 0;
+}

@@ -90,12 +90,11 @@ class Builder {
 
 }  // namespace
 
-Plan plan_for_device(const Figure& figure, const Pen& pen, StrokeOrder order) {
+Pen planning_pen(const Pen& pen, DeviceLevel level) {
   Pen p = pen;
-  if (p.corner == CornerStrategy::delays) p.corner = CornerStrategy::none;  // the board waits
-  Plan plan = plan_figure(figure, p, order);
-  plan.pen = pen;  // the delays the board will apply, reported with the plan
-  return plan;
+  if (level == DeviceLevel::commands && p.corner == CornerStrategy::delays)
+    p.corner = CornerStrategy::none;  // the board waits
+  return p;
 }
 
 DevicePen device_pen(const Pen& pen, const LaserSettings& laser, DeviceLevel level) {

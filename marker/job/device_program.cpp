@@ -90,11 +90,12 @@ class Builder {
 
 }  // namespace
 
-Pen planning_pen(const Pen& pen, DeviceLevel level) {
+Plan plan_for_device(const Figure& figure, const Pen& pen, StrokeOrder order) {
   Pen p = pen;
-  if (level == DeviceLevel::commands && p.corner == CornerStrategy::delays)
-    p.corner = CornerStrategy::none;  // the board waits
-  return p;
+  if (p.corner == CornerStrategy::delays) p.corner = CornerStrategy::none;  // the board waits
+  Plan plan = plan_figure(figure, p, order);
+  plan.pen = pen;  // the delays the board will apply, reported with the plan
+  return plan;
 }
 
 DevicePen device_pen(const Pen& pen, const LaserSettings& laser, DeviceLevel level) {

@@ -3,7 +3,7 @@
 // commands (driver/device_command.hpp) and one DevicePen.
 //
 // The board applies the pen's delays itself, so the host must not also put them in the plan:
-// for the `delays` strategy the plan is made without its dwells (planning_pen) and the
+// for the `delays` strategy the plan is made without its dwells (plan_for_device) and the
 // delays go to the board as DevicePen parameters; for `blanking` the laser-off run-in, run-out
 // and joining lines stay in the plan as jumps at their planned speed (a laser-off line at speed
 // is what a board executes as a jump with its jump speed set) and the board gets the τ laser
@@ -28,9 +28,9 @@ struct DeviceProgram {
   std::vector<double> ink_after{0.0};
 };
 
-// The pen the planner plans with for a device of `level`: a command-level board waits its
-// delays itself, so the `delays` strategy is planned without the host's dwells (as `none`).
-Pen planning_pen(const Pen& pen, DeviceLevel level);
+// The plan a command-level device should receive for this figure and pen: the same strokes and
+// blanking lines, without the host's delay dwells.
+Plan plan_for_device(const Figure& figure, const Pen& pen, StrokeOrder order);
 
 // The device pen for a host pen and its laser settings, at a device level: sample-level devices
 // get the laser settings only (the host applies delays), command-level devices the delays too.

@@ -25,7 +25,15 @@ double seconds_since(JobClock::time_point t0) {
 }
 
 CompiledJob compile_job(const JobSpec& spec, DeviceLevel level) {
-  return JobCompiler(spec, level).compile(spec.text);
+  check_spec(spec, spec.text);
+  CompiledJob job;
+  job.level = level;
+  job.figure = layout_text(spec.text, *spec.font, spec.layout);
+  check_layout(job.figure, spec);
+  job.plan = level == DeviceLevel::commands ? plan_for_device(job.figure, spec.pen, spec.order)
+                                            : plan_figure(job.figure, spec.pen, spec.order);
+  complete_plan(job, spec);
+  return job;
 }
 
 namespace {

@@ -52,8 +52,7 @@ struct CompiledJob {
 
 // Layout, plan and every refusal. Throws InputError (or MissingGlyphError) naming the problem.
 // `level` picks the plan a device of that level takes (command-level: no host delay dwells).
-// The parts of a series compile incrementally with a JobCompiler (marker/job/job_compiler.hpp);
-// this is one used once.
+// The parts of a series compile incrementally with a JobCompiler (marker/job/job_compiler.hpp).
 CompiledJob compile_job(const JobSpec& spec, DeviceLevel level = DeviceLevel::samples);
 
 // Fault injection (tests, `marker mark --inject KIND@N`): the drain finds the memory empty from

@@ -2,8 +2,8 @@
 // Compiling the parts of a series: one spec (font, layout, pen, head, passes) and a new text per
 // part. The text is laid out again only where it changed (relayout_text: the font's shapes are
 // computed once, unchanged glyphs are kept) and planned again only from the first changed glyph
-// (Replanner), with every refusal of compile_job — which is a JobCompiler used once. The result
-// equals a fresh compile_job of the same text.
+// (Replanner; a command-level device's plan is made whole), with every refusal of compile_job.
+// The result equals a fresh compile_job of the same text.
 //
 // The plan starts where the mirrors are (`home`): a device that marks one job after another
 // leaves them where the last job ended, and a sample-level job's first jump (its length, the
@@ -14,6 +14,13 @@
 #include "marker/plan/replan.hpp"
 
 namespace mark {
+
+// The steps compile_job and JobCompiler share: the spec's refusals before the layout (text,
+// font, pen, passes), the layout's (the letters leave the field), and the plan's completion
+// (passes, laser delay ticks) with its refusals (speeds, field).
+void check_spec(const JobSpec& spec, std::string_view text);
+void check_layout(const Figure& figure, const JobSpec& spec);
+void complete_plan(CompiledJob& job, const JobSpec& spec);
 
 class JobCompiler {
  public:

@@ -45,6 +45,19 @@ std::vector<ObjectText> render_objects(const JobFile& job,
   return texts;
 }
 
+std::vector<ObjectText> first_part_texts(const JobFile& job,
+                                         const std::map<std::string, std::string>& variables,
+                                         SysTime now, std::map<std::string, std::int64_t>* serials) {
+  std::map<std::string, std::int64_t> starts;
+  for (const auto& [name, spec] : job.used_counters()) starts[name] = spec.start;
+  auto vars = variables;
+  for (const std::string& v : job.required_variables())
+    if (!vars.count(v)) vars[v] = "<" + v + ">";
+  std::vector<ObjectText> texts = render_objects(job, vars, now, starts);
+  if (serials) *serials = std::move(starts);
+  return texts;
+}
+
 JobFonts::JobFonts(const JobFile& job, std::vector<std::string>* warnings) {
   for (const JobObject& o : job.objects) {
     const TextObject* t = o.text();
@@ -71,8 +84,17 @@ JobSpec object_spec(const JobFile& job, const JobObject& object, const std::stri
   spec.layout = t.layout;
   spec.head = job.head;
   spec.pen = pen.motion;
+  spec.laser = pen.laser;
+  spec.passes = pen.passes;
   spec.order = t.order;
   return spec;
+}
+
+std::string object_place(const JobFile& job, std::size_t i) {
+  std::string place = job.source;
+  place.append(": objects[").append(std::to_string(i)).append("] \"");
+  place.append(job.objects.at(i).name).append("\": ");
+  return place;
 }
 
 }  // namespace mark

@@ -43,9 +43,10 @@ JobResult run_on_device(const JobSpec& spec, CompiledJob job, double compiled_s,
                         JobClock::time_point t0, const JobOptions& options, Device& device) {
   JobResult result;
   const DeviceDescription desc = device.describe();
+  const auto kind = [](DeviceLevel l) { return l == DeviceLevel::samples ? "sample-level" : "command-level"; };
   if (job.level != desc.level)
-    throw InputError("the job was compiled for a " + std::string(to_string(job.level)) +
-                     "-level device; " + desc.name + " takes " + std::string(to_string(desc.level)));
+    throw InputError(std::string("the job was compiled for a ") + kind(job.level) + " device; " +
+                     desc.name + " is " + kind(desc.level));
   result.job = std::move(job);
   if (spec.head.field_mm > desc.field_mm * (1 + 1e-12))
     throw InputError("the job's field (" + std::to_string(spec.head.field_mm) +

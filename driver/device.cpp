@@ -2,6 +2,18 @@
 
 namespace mark {
 
+DeviceFault fault_from(std::exception_ptr error, std::uint64_t at) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const DeviceFaultError& e) {
+    return e.fault();
+  } catch (const std::exception& e) {
+    return {FaultCategory::device, e.what(), at};
+  } catch (...) {
+  }
+  return {FaultCategory::device, "unknown device error", at};
+}
+
 std::string_view to_string(DeviceLevel level) {
   switch (level) {
     case DeviceLevel::samples: return "samples";

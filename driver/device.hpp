@@ -21,6 +21,7 @@
 // Faults carry a category and a message; the report of a job says how far it got, so the
 // caller can say what was and was not marked. Devices are re-armable: a station runs for months.
 #include <cstdint>
+#include <exception>
 #include <optional>
 #include <span>
 #include <string>
@@ -75,6 +76,10 @@ class DeviceFaultError : public DeviceError {
  private:
   DeviceFault fault_;
 };
+
+// The fault an exception from a device stands for (the drain keeps the exception a device threw):
+// a DeviceFaultError's own fault, any other error as category `device` at sample `at`.
+DeviceFault fault_from(std::exception_ptr error, std::uint64_t at);
 
 // What a device is and what it accepts. Field: a square centred on the origin, |x|, |y| ≤
 // field_mm / 2, in the field frame (mm).

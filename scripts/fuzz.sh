@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the font-loader and job-file fuzz targets with clang, AddressSanitizer and UBSan (in build-fuzz/, or
+# Builds the parser fuzz targets (font loaders, job files, the PGM reader) with clang,
+# AddressSanitizer and UBSan (in build-fuzz/, or
 # $MARKER_FUZZ_BUILD) and runs each for SECONDS (default 20). Exits non-zero, naming the crashing
 # input, if any target finds a crash, a sanitizer report, a leak or a broken invariant.
 #   scripts/fuzz.sh [SECONDS]
@@ -11,7 +12,7 @@ build=${MARKER_FUZZ_BUILD:-$root/build-fuzz}
 
 CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DMARKER_FUZZ=ON -DMARKER_TESTS=ON -DMARKER_BENCH=OFF >/dev/null
-ninja -C "$build" fuzz_jhf fuzz_lff fuzz_cxf fuzz_job
+ninja -C "$build" fuzz_jhf fuzz_lff fuzz_cxf fuzz_job fuzz_pgm
 
 # Seeds: our fixtures and a few small real fonts. The corpus directories persist between runs.
 declare -A seeds=(
@@ -19,10 +20,11 @@ declare -A seeds=(
   [lff]="$root/tests/fonts/data/*.lff /usr/share/librecad/fonts/standard.lff /usr/share/librecad/fonts/greekp.lff"
   [cxf]="$root/tests/fonts/data/*.cxf"
   [job]="$root/tests/fuzz/job-seeds/*.json"
+  [pgm]="$root/tests/fuzz/pgm-seeds/*.pgm"
 )
 
 status=0
-for format in jhf lff cxf job; do
+for format in jhf lff cxf job pgm; do
   corpus="$build/fuzz-corpus/$format"
   artifacts="$build/fuzz-artifacts/$format"
   mkdir -p "$corpus" "$artifacts"

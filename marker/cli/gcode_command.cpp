@@ -11,6 +11,7 @@
 
 #include "fonts/error.hpp"
 #include "marker/cli/commands.hpp"
+#include "marker/cli/print.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cnc/depression.hpp"
 #include "marker/cnc/gcode_writer.hpp"
@@ -36,13 +37,6 @@ struct GcodeArgs {
   std::string output;
   std::string preview;
 };
-
-template <class... T>
-void print(const char* format, T... values) {
-  char line[512];
-  std::snprintf(line, sizeof line, format, values...);
-  std::cout << line;
-}
 
 // Writes next to the target and renames, so a failure never leaves half a program behind.
 void write_file(const std::string& path, const std::string& text) {

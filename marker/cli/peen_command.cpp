@@ -7,6 +7,7 @@
 #include "fonts/error.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/interrupt.hpp"
+#include "marker/cli/print.hpp"
 #include "marker/cli/gantry_options.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/peen/dot_fonts.hpp"
@@ -66,14 +67,6 @@ DotText build_dots(const PeenArgs& a) {
   if (!(a.layout.field_mm > 0)) throw InputError("--field must be a positive size in mm");
   require_inside(dots.bounds(), Field{a.layout.field_mm}, "the dot text");
   return dots;
-}
-
-// printf-style formatting onto std::cout (one stream for everything the command prints).
-template <class... T>
-void print(const char* format, T... values) {
-  char line[256];
-  std::snprintf(line, sizeof line, format, values...);
-  std::cout << line;
 }
 
 void print_summary(const nlohmann::json& r) {

@@ -2,21 +2,13 @@
 // (objects with pens that exist, counters the templates use declared and valid) or throws
 // InputError naming the file. Anything else is a bug. Parsing opens nothing and writes nothing.
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string_view>
 
 #include "fonts/error.hpp"
+#include "fuzz_check.hpp"
 #include "marker/job/job_file.hpp"
 
-namespace {
-
-[[noreturn]] void broken(const char* what) {
-  std::fprintf(stderr, "fuzz invariant broken: %s\n", what);
-  std::abort();
-}
-
-}  // namespace
+using mark::fuzz::broken;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

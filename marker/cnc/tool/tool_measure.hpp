@@ -10,7 +10,7 @@
 #include <string>
 
 #include "marker/cnc/tool/circle_fit.hpp"
-#include "marker/cnc/tool/gray_image.hpp"
+#include "marker/image/gray_image.hpp"
 
 namespace mark {
 

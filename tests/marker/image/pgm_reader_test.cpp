@@ -6,7 +6,7 @@
 #include <string>
 
 #include "fonts/error.hpp"
-#include "marker/cnc/tool/gray_image.hpp"
+#include "marker/image/gray_image.hpp"
 
 namespace mark::test {
 namespace {

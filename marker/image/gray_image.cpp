@@ -1,5 +1,5 @@
-// Reading the tool's shadow image: PNG through Cairo, PGM through our parser.
-#include "marker/cnc/tool/gray_image.hpp"
+// Reading a grey-level image: PNG through Cairo, PGM through our parser.
+#include "marker/image/gray_image.hpp"
 
 #include <cairo.h>
 
@@ -47,7 +47,7 @@ GrayImage from_cairo(cairo_surface_t* s, const std::string& path) {
 
 GrayImage read_gray_image(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the tool image");
+  if (!in) throw InputError(path + ": cannot open the image");
   std::ostringstream ss;
   ss << in.rdbuf();
   const std::string bytes = ss.str();

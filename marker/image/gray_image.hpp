@@ -1,7 +1,7 @@
 #pragma once
-// A grey-level image for tool measurement, intensities 0 (dark) .. 1 (bright), row-major, row 0
-// at the top. Read from PNG (through Cairo) or PGM (P2 ASCII / P5 binary, our own parser);
-// the format is recognised by the file's first bytes, not its name.
+// A grey-level image — a tool's shadow, gravure artwork, a line-work mask — intensities 0 (dark)
+// .. 1 (bright), row-major, row 0 at the top. Read from PNG (through Cairo) or PGM (P2 ASCII /
+// P5 binary, our own parser); the format is recognised by the file's first bytes, not its name.
 #include <cstdint>
 #include <string>
 #include <string_view>

@@ -1,0 +1,184 @@
+// `marker gravure IMAGE [--mask LW.png] [--screen L[xC]] [--cell-rate HZ] [--resolution PX_MM]
+//  [--stagger] [--ct-depth UM ...] [--lw-depth UM ...] [--lift UM] [--stylus-angle DEG]
+//  [--head F:D:G,...] [--nominal-head F:D:G,...] [--tune auto|nominal|off] [--notch F:D:DB]...
+//  [--emphasis F:D:FT:DT] [--target HZ] [--real-time] [--no-compare] [--json] [--preview FILE]`
+// Engraves the image on the simulated stylus head (US 6,007,230): toolpath from the image data,
+// notch / emphasis filtering, optional automatic tuning, and the engraving compared with what
+// was intended, with and without the filters.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "fonts/error.hpp"
+#include "marker/cli/commands.hpp"
+#include "marker/cli/print.hpp"
+#include "marker/cli/gravure_options.hpp"
+#include "marker/cli/interrupt.hpp"
+#include "marker/gravure/gravure_job.hpp"
+#include "marker/gravure/gravure_json.hpp"
+#include "marker/gravure/gravure_preview.hpp"
+#include "marker/gravure/head_design.hpp"
+#include "marker/gravure/parameter_range.hpp"
+
+namespace mark::cli {
+namespace {
+
+struct GravureArgs {
+  std::string image;
+  std::string mask;
+  std::string screen = "70";
+  double cell_rate_hz = 6250;
+  double resolution = 0;
+  bool stagger = false;
+  GravureSetup setup;
+  double stylus_angle_deg = 120;
+  std::string head;
+  std::string nominal_head;
+  double sense_noise_um = 0.02;
+  std::string tune = "nominal";
+  std::vector<std::string> notches;
+  std::string emphasis;
+  double target_hz = 20000;
+  bool real_time = false;
+  bool no_compare = false;
+  bool json = false;
+  std::string preview;
+};
+
+void check_setup(const CellSetup& s, const std::string& prefix) {
+  check_range("--" + prefix + "-depth", s.full_cell_depth_um, kCellDepthRange);
+  check_range("--" + prefix + "-channel", s.channel_depth_um, kChannelDepthRange);
+  check_range("--" + prefix + "-gain", s.gain, kSetupGainRange);
+  check_range("--" + prefix + "-offset", s.offset_um, kSetupOffsetRange);
+}
+
+GravureJobSpec make_spec(const GravureArgs& a) {
+  GravureJobSpec spec;
+  parse_screen("--screen", a.screen, spec.screen);
+  check_range("--cell-rate", a.cell_rate_hz, kCellRateRange);
+  if (a.cell_rate_hz != std::floor(a.cell_rate_hz)) {
+    char msg[96];
+    std::snprintf(msg, sizeof msg, "--cell-rate %g: must be a whole number of hertz", a.cell_rate_hz);
+    throw InputError(msg);
+  }
+  spec.screen.cell_rate_hz = static_cast<std::uint32_t>(a.cell_rate_hz);
+  spec.screen.stagger = a.stagger;
+  if (a.resolution != 0) check_range("--resolution", a.resolution, kResolutionRange);
+  spec.px_per_mm = a.resolution;
+  check_setup(a.setup.ct, "ct");
+  check_setup(a.setup.lw, "lw");
+  check_range("--lift", a.setup.lift_um, kLiftRange);
+  spec.setup = a.setup;
+  check_range("--stylus-angle", a.stylus_angle_deg, kStylusAngleRange);
+  spec.stylus_angle_deg = a.stylus_angle_deg;
+  if (!a.head.empty()) spec.head.head = parse_head("--head", a.head);
+  if (!a.nominal_head.empty()) spec.nominal_head = parse_head("--nominal-head", a.nominal_head);
+  check_range("--sense-noise", a.sense_noise_um, kSenseNoiseRange);
+  spec.head.sense_noise_um = a.sense_noise_um;
+  check_range("--target", a.target_hz, {11000, 45000, "Hz"});
+  spec.tuning.target.corner_hz = a.target_hz;
+
+  const bool manual = !a.notches.empty() || !a.emphasis.empty();
+  if (a.tune == "auto") spec.filters = FilterChoice::tuned;
+  else if (a.tune == "nominal") spec.filters = FilterChoice::nominal;
+  else if (a.tune == "off") spec.filters = FilterChoice::off;
+  else throw InputError("--tune '" + a.tune + "': expected auto, nominal or off");
+  if (manual) {
+    if (a.tune != "nominal") throw InputError("--notch / --emphasis set the filters by hand: they cannot be combined with --tune " + a.tune);
+    spec.filters = FilterChoice::manual;
+    for (const std::string& n : a.notches) spec.manual_bank.sections.push_back(parse_notch("--notch", n));
+    if (!a.emphasis.empty()) spec.manual_bank.sections.push_back(parse_emphasis("--emphasis", a.emphasis));
+    spec.manual_bank.gain = 1 / spec.nominal_head.static_gain();
+  }
+  spec.compare_unfiltered = !a.no_compare;
+  spec.run.virtual_time = !a.real_time;
+  spec.run.stop = &interrupt_flag();
+  spec.image = read_gray_image(a.image);
+  if (!a.mask.empty()) spec.mask = read_gray_image(a.mask);
+  return spec;
+}
+
+void print_summary(const GravureReport& r) {
+  print("engraved %llu cells (%u tracks of %u) in %.3f s device time, %llu samples at %.0f kHz\n",
+        static_cast<unsigned long long>(r.cells), r.layout.tracks, r.layout.cells_per_track,
+        r.filtered.run.report.device_time_s, static_cast<unsigned long long>(r.samples), kStylusRate_hz / 1000);
+  print("cells: %llu white, %llu single, %llu channel (> 90 %%), %llu split (double frequency), %llu line-work\n",
+        static_cast<unsigned long long>(r.counts.white), static_cast<unsigned long long>(r.counts.single),
+        static_cast<unsigned long long>(r.counts.channel), static_cast<unsigned long long>(r.counts.split),
+        static_cast<unsigned long long>(r.counts.line_work));
+  print("filters %s (%zu sections): depth error rms %.3f µm, max %.3f µm; drive peak %.1f µm\n",
+        std::string(to_string(r.filters)).c_str(), r.bank.sections.size(), r.filtered.depth_error.rms_um,
+        r.filtered.depth_error.max_um, r.filtered.drive_peak_um);
+  if (r.unfiltered)
+    print("without filters:   depth error rms %.3f µm, max %.3f µm (%.1f× the filtered rms)\n",
+          r.unfiltered->depth_error.rms_um, r.unfiltered->depth_error.max_um,
+          r.unfiltered->depth_error.rms_um / std::max(1e-12, r.filtered.depth_error.rms_um));
+  if (r.tuning) {
+    print("auto-tuned head: %s (fit error %.2f %%); tuned response %+.2f .. %+.2f dB to 10 kHz%s\n",
+          describe(r.tuning->fit.model).c_str(), 100 * r.tuning->fit.rms_relative_error, r.tuning->flatness.min_db,
+          r.tuning->flatness.max_db, r.tuning->within_tolerance ? "" : " — OUTSIDE ±1 dB");
+  }
+}
+
+int run_gravure(const GravureArgs& a) {
+  const GravureJobSpec spec = make_spec(a);
+  GravureReport report = run_gravure_job(spec);
+  // Ctrl-C: the drain lifted the stylus within one block; nothing is written, exit 130.
+  if (report.cancelled) throw Interrupted();
+  if (!a.preview.empty()) write_gravure_preview(report.layout, report.intended_um, report.engraved_um, a.preview);
+  if (a.json)
+    std::cout << to_json(spec, report).dump(2) << "\n";
+  else
+    print_summary(report);
+  if (!a.preview.empty()) std::cerr << "marker: wrote " << a.preview << "\n";
+  return 0;
+}
+
+void add_setup_options(CLI::App& sub, CellSetup& s, const std::string& prefix, const std::string& name) {
+  const std::string g = name + " setup";
+  sub.add_option("--" + prefix + "-depth", s.full_cell_depth_um, name + " full-cell depth (100 % cell), µm")
+      ->capture_default_str()->group(g);
+  sub.add_option("--" + prefix + "-channel", s.channel_depth_um, name + " channel depth between 100 % cells, µm")
+      ->capture_default_str()->group(g);
+  sub.add_option("--" + prefix + "-gain", s.gain, name + " gain on the density")->capture_default_str()->group(g);
+  sub.add_option("--" + prefix + "-offset", s.offset_um, name + " offset added to every depth, µm")
+      ->capture_default_str()->group(g);
+}
+
+}  // namespace
+
+Command make_gravure_command() {
+  auto a = std::make_shared<GravureArgs>();
+  return Command(
+      [a](CLI::App& app) {
+        auto* sub = app.add_subcommand("gravure", "engrave an image on the simulated gravure stylus head");
+        sub->add_option("image", a->image, "8-bit grey image, PNG or PGM (white 0 % … black 100 % density)")->required();
+        sub->add_option("--mask", a->mask, "line-work mask of the same size: dark pixels are line-work (LW)");
+        sub->add_option("--screen", a->screen, "screen in lines/cm: ALONG or ALONGxACROSS")->capture_default_str();
+        sub->add_option("--cell-rate", a->cell_rate_hz, "cells engraved per second, Hz")->capture_default_str();
+        sub->add_option("--resolution", a->resolution, "image pixels per mm (default: 4 a cell along the track)");
+        sub->add_flag("--stagger", a->stagger, "offset odd tracks by half a cell");
+        add_setup_options(*sub, a->setup.ct, "ct", "CT");
+        add_setup_options(*sub, a->setup.lw, "lw", "LW");
+        sub->add_option("--lift", a->setup.lift_um, "stylus height above the surface over white, µm")->capture_default_str();
+        sub->add_option("--stylus-angle", a->stylus_angle_deg, "diamond's included angle, degrees")->capture_default_str();
+        const std::string head = "Head and filters";
+        sub->add_option("--head", a->head, "the simulated head's resonances FREQ_HZ:DAMPING:GAIN,... (default 1800:0.06:0.8,5500:0.04:0.2)")->group(head);
+        sub->add_option("--nominal-head", a->nominal_head, "the head model the default filters are designed for (default: the typical head)")->group(head);
+        sub->add_option("--sense-noise", a->sense_noise_um, "sensing coil noise, µm rms")->capture_default_str()->group(head);
+        sub->add_option("--tune", a->tune, "filters: auto (measure and fit the head), nominal (designed for --nominal-head), off")
+            ->capture_default_str()->group(head);
+        sub->add_option("--notch", a->notches, "a notch filter by hand, FREQ_HZ:DAMPING:DEPTH_DB (repeatable)")->group(head);
+        sub->add_option("--emphasis", a->emphasis, "the emphasis filter by hand, FREQ_HZ:DAMPING:CORNER_HZ:CORNER_DAMPING")->group(head);
+        sub->add_option("--target", a->target_hz, "corner of the flat target response, Hz")->capture_default_str()->group(head);
+        sub->add_flag("--real-time", a->real_time, "drain at the stylus clock (default: virtual time, as fast as possible)");
+        sub->add_flag("--no-compare", a->no_compare, "skip the engraving without filters");
+        sub->add_flag("--json", a->json, "print one JSON object with the job's figures");
+        sub->add_option("--preview", a->preview, "write intended and engraved cells side by side (.png or .svg)");
+        return sub;
+      },
+      [a] { return run_gravure(*a); });
+}
+
+}  // namespace mark::cli

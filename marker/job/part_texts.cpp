@@ -40,8 +40,16 @@ std::vector<ObjectText> render_objects(const JobFile& job,
   v.counters = &job.counters;
   v.serials = &serials;
   std::vector<ObjectText> texts;
-  for (const JobObject& o : job.objects)
-    if (const TextObject* t = o.text()) texts.push_back({o.name, render(t->text, v)});
+  for (std::size_t i = 0; i < job.objects.size(); ++i) {
+    const JobObject& o = job.objects[i];
+    const TextObject* t = o.text();
+    if (!t) continue;
+    try {
+      texts.push_back({o.name, render(t->text, v)});
+    } catch (const InputError& e) {
+      throw InputError(object_place(job, i) + e.what());
+    }
+  }
   return texts;
 }
 

@@ -16,6 +16,9 @@ struct HeadModel {
   double field_mm = 110;             // square field, centred on 0: |x|, |y| ≤ field_mm / 2
   bool second_order = false;         // false: first-order lag; true: (ωn, ζ) with ωn = 2ζ/τ
   double zeta = 1.0;                 // damping of the second-order model
+  // Focused spot diameter (1/e²): pulses closer than this overlap into a line (dynamics.md §4.2:
+  // ≈ 40 µm at f = 160 mm with a 7 mm beam and M² = 1.3).
+  double spot_diameter_um = 40;
 
   // Natural frequency of the second-order model with the same ramp lag τ (rad/s).
   double omega_n() const { return 2 * zeta / tau_s; }

@@ -58,6 +58,8 @@ void SimScanner::start_job() {
   lit_.runs.clear();
   lit_stale_ = false;
   trace_.clear();
+  dose_scale_ = laser_.power_pct / 100;
+  pulses_.begin(laser_.frequency_khz, options_.head.spot_diameter_um);
   samples_ = 0;
   was_lit_ = false;
   progress_.store(0, std::memory_order_relaxed);
@@ -79,6 +81,17 @@ void SimScanner::begin_job(const JobHeader& header) {
                   options_.head.name.c_str(), header.field_mm, options_.head.field_mm);
     throw DeviceFaultError({FaultCategory::out_of_field, msg, 0});
   }
+  const LaserSettings laser = header.pens.empty() ? LaserSettings{} : header.pens.front().laser;
+  if (!(laser.power_pct >= 0 && laser.power_pct <= 100) || !(laser.frequency_khz > 0) ||
+      !std::isfinite(laser.frequency_khz)) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg,
+                  "simulated scanner (%s): the pen's power %g %% or pulse frequency %g kHz is "
+                  "outside 0–100 %% / above 0 kHz",
+                  options_.head.name.c_str(), laser.power_pct, laser.frequency_khz);
+    throw DeviceFaultError({FaultCategory::device, msg, 0});
+  }
+  laser_ = laser;
   start_job();
 
   // Size everything the drain thread will touch, so write() never allocates.
@@ -114,9 +127,16 @@ DeviceReport SimScanner::end_job() {
   r.outcome = s;
   r.samples_out = samples_;
   r.device_time_s = device_time_s();
+  const PulseFigures p = pulses_.figures();
   r.figures = {{"samples", static_cast<double>(samples_)},
                {"device_time_s", device_time_s()},
-               {"dose_tiles", static_cast<double>(dose_.tiles())}};
+               {"dose_tiles", static_cast<double>(dose_.tiles())},
+               {"power_pct", laser_.power_pct},
+               {"frequency_khz", laser_.frequency_khz},
+               {"pulses", static_cast<double>(p.pulses)},
+               {"pulse_spacing_um", p.spacing_max_um},
+               {"pulse_spacing_mean_um", p.spacing_mean_um},
+               {"pulse_overlap_fraction", p.overlap()}};
   return r;
 }
 
@@ -185,7 +205,10 @@ void SimScanner::write(std::span<const ScanSample> block) {
     throw DeviceError("simulated scanner (" + options_.head.name + "): halted, laser off");
   }
   const DeviceState state = state_.load(std::memory_order_acquire);
-  if (state == DeviceState::idle) start_job();  // implicit job
+  if (state == DeviceState::idle) {  // implicit job: full power, default frequency
+    laser_ = LaserSettings{};
+    start_job();
+  }
   if (state != DeviceState::idle && state != DeviceState::running)
     throw DeviceError("simulated scanner (" + options_.head.name + "): the job has ended (" +
                       std::string(to_string(state)) + "); reset() it first");
@@ -267,11 +290,12 @@ void SimScanner::follow(const ScanSample& s) {
     step_axis(axis_[0], cmd.x, dt);
     step_axis(axis_[1], cmd.y, dt);
     const Vec2 p1 = beam();
+    pulses_.step(p0, p1, dt, target_power > 0);
 
     const double mean_power = target_power + (power_ - target_power) * mean_share;
     power_ += (target_power - power_) * rise;
     if (mean_power > 0)
-      trail_.add(p0, p1, mean_power * dt);
+      trail_.add(p0, p1, dose_scale_ * mean_power * dt);
     else
       trail_.flush();
     record_lit(p0, p1, power_ >= 0.5);

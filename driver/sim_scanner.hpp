@@ -15,6 +15,12 @@
 // outside begin_job/end_job start an implicit job with nothing sized (tests that use the
 // scanner as a bare sink, the emulated board).
 //
+// Laser: the dose is time × the sample's power × the pen's power (JobHeader::pens[0].laser
+// .power_pct; 100 % for an implicit job), so half the power leaves half the dose; the lit test
+// (where the beam marked) does not depend on the pen's power. The pulse train at the pen's
+// frequency gives the pulse spacing along the lit path and its overlap against the head's spot
+// diameter (driver/pulse_train.hpp).
+//
 // Laser safety: a block holding any sample outside the field (or not finite) is refused as a
 // whole: the scanner halts (laser off) and throws DeviceFaultError (out_of_field) naming the
 // sample and coordinate. After halt() or abort() every further write throws; the laser stays
@@ -32,6 +38,7 @@
 #include "driver/dose_trail.hpp"
 #include "driver/head_model.hpp"
 #include "driver/lit_paths.hpp"
+#include "driver/pulse_train.hpp"
 #include "driver/sim_trace.hpp"
 #include "driver/vec2.hpp"
 #include "ringbuffer/scan_sample.hpp"
@@ -85,6 +92,9 @@ class SimScanner : public SampleDevice<ScanSample> {
   // One row per sample of this job when options().trace is set.
   const std::vector<SimTraceRow>& trace() const { return trace_; }
   const SimScannerOptions& options() const { return options_; }
+  // The laser settings of this job (the header's first pen) and its pulse figures so far.
+  const LaserSettings& laser() const { return laser_; }
+  PulseFigures pulses() const { return pulses_.figures(); }
 
  private:
   struct Axis {
@@ -115,6 +125,9 @@ class SimScanner : public SampleDevice<ScanSample> {
   mutable LitPaths lit_;
   mutable bool lit_stale_ = false;
   std::vector<SimTraceRow> trace_;
+  LaserSettings laser_;       // this job's pen
+  double dose_scale_ = 1;     // the pen's power, 0..1
+  PulseTrain pulses_;
 
   // State shared with other threads (abort, status).
   std::atomic<DeviceState> state_{DeviceState::idle};

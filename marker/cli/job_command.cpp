@@ -3,6 +3,7 @@
 // opened, nothing written).
 // `marker job new -o FILE --text TEMPLATE [layout, pen and counter options]`: writes a job file
 // from command-line options, so nobody has to write JSON by hand to start.
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -11,7 +12,9 @@
 #include "marker/cli/commands.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/option_ranges.hpp"
+#include "marker/cli/option_values.hpp"
 #include "marker/cli/production_options.hpp"
+#include "marker/job/auto_speed.hpp"
 #include "marker/job/part_texts.hpp"
 #include "marker/limits/counter_limits.hpp"
 #include "marker/limits/pen_limits.hpp"
@@ -36,7 +39,7 @@ struct NewArgs {
   double spot_um = 40;
   std::string pen = "default";
   std::string corner = "blanking";
-  double speed_mm_s = 1000;
+  std::string speed = "auto";  // mm/s, or auto: from the first part's figure and the head
   std::optional<double> jump_speed_mm_s, tick_us;
   double power_pct = 100, frequency_khz = 30, pulse_width_ns = 0;
   int passes = 1;
@@ -56,17 +59,13 @@ int run_check(const CheckArgs& a) {
   std::vector<std::string> warnings;
   const JobFonts fonts(job, &warnings);
   for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
-  // The first part of a fresh store: every counter at its start (the store, if any, is not
-  // read: checking a job touches nothing but the job and its fonts).
-  const SysTime now = SystemClock().now();
+  // The first part of a fresh store (the store, if any, is not read: checking a job touches
+  // nothing but the job and its fonts).
   std::map<std::string, std::int64_t> serials;
-  for (const auto& [name, spec] : job.used_counters()) serials[name] = spec.start;
-  auto vars = variables;
-  for (const std::string& v : job.required_variables()) vars[v] = "<" + v + ">";
-  const std::vector<ObjectText> texts = render_objects(job, vars, now, serials);
+  const std::vector<ObjectText> texts = first_part_texts(job, variables, SystemClock().now(), &serials);
 
   nlohmann::json out = {{"job", job.job_name}, {"file", a.file}, {"head", job.head.name},
-                        {"field_mm", job.head.field_mm}, {"spot_diameter_um", job.spot_diameter_um},
+                        {"field_mm", job.head.field_mm}, {"spot_diameter_um", job.head.spot_diameter_um},
                         {"objects", nlohmann::json::array()}, {"serials", serials},
                         {"required_variables", job.required_variables()}};
   double total_s = 0;
@@ -77,12 +76,12 @@ int run_check(const CheckArgs& a) {
     try {
       compiled = compile_job(object_spec(job, o, texts[i].text, fonts));
     } catch (const InputError& e) {
-      throw InputError(a.file + ": objects[" + std::to_string(i) + "] \"" + o.name + "\": " + e.what());
+      throw InputError(object_place(job, i) + e.what());
     }
     // Pulses land v/f apart; overlap against the spot (dynamics.md §4.2).
     const double spacing_um = pen.motion.mark_speed_mm_s / (pen.laser.frequency_khz * 1e3) * 1e3;
-    const double overlap = 1 - spacing_um / job.spot_diameter_um;
-    const double duration_s = compiled.plan.duration_s() * pen.passes;
+    const double overlap = 1 - spacing_um / job.head.spot_diameter_um;
+    const double duration_s = compiled.plan.duration_s();  // every pass
     total_s += duration_s;
     const Box b = compiled.figure.bounds();
     out["objects"].push_back({{"name", o.name}, {"kind", o.kind}, {"pen", o.pen},
@@ -103,7 +102,7 @@ int run_check(const CheckArgs& a) {
   }
   std::printf("%s: job \"%s\" on %s (field %.0f mm, spot %.0f µm): %zu object(s), planned %.3f s a part\n",
               a.file.c_str(), job.job_name.c_str(), job.head.name.c_str(), job.head.field_mm,
-              job.spot_diameter_um, job.objects.size(), total_s);
+              job.head.spot_diameter_um, job.objects.size(), total_s);
   for (const auto& o : out["objects"]) {
     std::string text = o["text"].get<std::string>();
     for (char& c : text)
@@ -122,6 +121,13 @@ int run_check(const CheckArgs& a) {
     std::printf("  variable %s has no default: mark with --set %s=VALUE\n", v.c_str(), v.c_str());
   std::printf("ok\n");
   return 0;
+}
+
+double speed_number(const std::string& speed) {
+  const std::optional<double> v = parse_number(speed);
+  if (!v) throw InputError("--speed: '" + speed + "' is neither auto nor a number (range: " + kSpeedRange.text() + ")");
+  check_range("--speed", *v, kSpeedRange, speed);
+  return *v;
 }
 
 nlohmann::ordered_json new_job_json(const NewArgs& a) {
@@ -149,7 +155,7 @@ nlohmann::ordered_json new_job_json(const NewArgs& a) {
   nlohmann::ordered_json object = {{"name", a.object}, {"kind", "text"}};
   object.update(layout);
 
-  nlohmann::ordered_json pen = {{"corner", a.corner}, {"speed_mm_s", a.speed_mm_s},
+  nlohmann::ordered_json pen = {{"corner", a.corner}, {"speed_mm_s", a.speed == "auto" ? 1000.0 : speed_number(a.speed)},
                         {"power_pct", a.power_pct}, {"frequency_khz", a.frequency_khz},
                         {"pulse_width_ns", a.pulse_width_ns}, {"passes", a.passes}};
   if (a.jump_speed_mm_s) pen["jump_speed_mm_s"] = *a.jump_speed_mm_s;
@@ -191,11 +197,25 @@ nlohmann::ordered_json new_job_json(const NewArgs& a) {
   return job;
 }
 
+// --speed auto: the speed `marker mark --speed auto` picks for the first part's text, rounded
+// down to 10 mm/s, written into the pen so the job marks the same way every time.
+double auto_pen_speed(const nlohmann::ordered_json& j, const std::string& source) {
+  const JobFile job = parse_job(j.dump(), source);
+  const JobObject& o = job.objects.front();
+  const std::vector<ObjectText> texts = first_part_texts(job, job.variables, SystemClock().now());
+  const JobFonts fonts(job);
+  const JobSpec spec = object_spec(job, o, texts.front().text, fonts);
+  const double v = auto_mark_speed_mm_s(layout_text(spec.text, *spec.font, spec.layout), job.head);
+  return std::max(10.0, std::floor(v / 10) * 10);
+}
+
 int run_new(const NewArgs& a) {
   check_output_path("--output", a.output, {".json"});
   if (std::filesystem::exists(a.output) && !a.force)
     throw InputError(a.output + " exists; give --force to replace it");
-  const std::string text = new_job_json(a).dump(2) + "\n";
+  nlohmann::ordered_json j = new_job_json(a);
+  if (a.speed == "auto") j["pens"][a.pen]["speed_mm_s"] = auto_pen_speed(j, a.output);
+  const std::string text = j.dump(2) + "\n";
   parse_job(text, a.output);  // what we write must read back: the same checks as any job file
   write_file_whole(a.output, text);  // a reader never sees half a job
   std::printf("wrote %s\n", a.output.c_str());
@@ -226,7 +246,9 @@ Command make_job_command() {
         add_ranged_option(*n, "--spot", a.spot_um, "focused spot diameter, µm", kSpotRange)->capture_default_str();
         n->add_option("--pen", a.pen, "the pen's name")->capture_default_str();
         n->add_option("--corner", a.corner, "corner strategy: blanking, delays, none")->capture_default_str();
-        add_ranged_option(*n, "--speed", a.speed_mm_s, "marking speed, mm/s (at most the head's limit)", kSpeedRange)
+        n->add_option("--speed", a.speed,
+                      "marking speed, mm/s (at most the head's limit), or auto: what `mark --speed auto` "
+                      "picks for the first part's text, written into the pen")
             ->capture_default_str();
         add_ranged_option(*n, "--jump-speed", a.jump_speed_mm_s,
                           "jump speed, mm/s (default: the head's; at most its limit)", kSpeedRange);

@@ -1,11 +1,14 @@
 // `marker mark TEXT [layout options] [--device sim] [--head SL10|SL14|cheap]
 //  [--corner blanking|delays|none] [--speed MM_S] [--preview FILE.png] [--virtual-time] [--json]
 //  [--inject KIND@N] [--trace FILE.csv] [--require-quality high|good]`
+// `marker mark --job FILE [--set NAME=VALUE …] [--count N] [--store PATH|URL] [--station NAME]
+//  [--remark ID]`: the production run, in mark_job.cpp.
 // The main job: real time by default (the drain paced at the tick, so the line memory is written
 // while it is read), quality figures against the laid-out text. Ctrl-C / SIGTERM put the laser
 // out within one drain block; the command then says where it stopped and exits 130.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -23,11 +26,14 @@
 #include "marker/cli/inject_option.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
+#include "marker/cli/mark_job.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
 #include "marker/job/auto_speed.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
+#include "marker/job/job_json.hpp"
+#include "marker/limits/counter_limits.hpp"
 #include "marker/limits/pen_limits.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/preview/mark_preview.hpp"
@@ -54,6 +60,7 @@ struct MarkArgs {
   std::string require_quality;
   bool virtual_time = false;
   bool json = false;
+  MarkJobArgs production;  // --job and its options
 };
 
 JobSpec make_spec(const MarkArgs& a) {
@@ -96,56 +103,18 @@ JobSpec make_spec(const MarkArgs& a) {
   return spec;
 }
 
-nlohmann::json quality_json(const Quality& q) {
-  return {{"max_deviation_um", q.max_deviation_um},
-          {"rms_deviation_um", q.rms_deviation_um},
-          {"coverage_fraction", q.coverage},
-          {"dose_ratio_max", q.dose_ratio_max},
-          {"overshoot_um", q.overshoot_um},
-          {"class", to_string(classify(q))}};
-}
-
 nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobOptions& options,
                        const JobResult& r, const std::string& device_name) {
-  nlohmann::json j = {{"text", spec.text},
-                      {"font", a.layout.font},
-                      {"height_mm", spec.layout.height_mm},
-                      {"head", spec.head.name},
-                      {"device", device_name},
-                      {"outcome", to_string(r.outcome)},
-                      {"ink_marked_fraction", r.ink_marked},
-                      {"glyphs", r.glyphs},
-                      {"strokes", r.strokes},
-                      {"commands", r.commands},
-                      {"samples", r.samples},
-                      {"mark_time_s", r.mark_time_s},
-                      {"compile_time_s", r.compile_time_s},
-                      {"wall_time_s", r.wall_time_s},
-                      {"underruns", r.drain.underrun_events},
-                      {"underrun_samples", r.drain.underrun_samples},
-                      {"jump_length_mm", r.jump_length_mm},
-                      {"corner", to_string(spec.pen.corner)},
-                      {"speed_mm_s", spec.pen.mark_speed_mm_s},
-                      {"tick_s", spec.pen.tick_s},
-                      {"peak_fill_samples", r.drain.peak_fill},
-                      {"line_memory_samples", options.memory_samples},
-                      {"lateness_p99_us", r.drain.lateness_p99_us},
-                      {"lateness_max_us", r.drain.lateness_max_us},
-                      {"realtime", {{"sched_fifo", r.drain.realtime_granted},
-                                    {"memory_locked", r.memory_locked}}}};
-  if (r.outcome != JobOutcome::done) j["stopped_at"] = r.stopped_at;
-  if (r.fault)
-    j["fault"] = {{"category", to_string(r.fault->category)},
-                  {"message", r.fault->message},
-                  {"at", r.fault->at}};
-  if (r.stop_latency_us >= 0) {
-    j["stop_latency_us"] = r.stop_latency_us;
-    j["stop_latency_samples"] = r.stop_latency_samples;
-  }
-  nlohmann::json figures = nlohmann::json::object();
-  for (const auto& [name, value] : r.device.figures) figures[name] = value;
-  j["device_figures"] = figures;
-  if (r.quality) j["quality"] = quality_json(*r.quality);
+  nlohmann::json j = job_result_json(r);
+  j["text"] = spec.text;
+  j["font"] = a.layout.font;
+  j["height_mm"] = spec.layout.height_mm;
+  j["head"] = spec.head.name;
+  j["device"] = device_name;
+  j["corner"] = to_string(spec.pen.corner);
+  j["speed_mm_s"] = spec.pen.mark_speed_mm_s;
+  j["tick_s"] = spec.pen.tick_s;
+  j["line_memory_samples"] = options.memory_samples;
   return j;
 }
 
@@ -163,6 +132,10 @@ void print_summary(const JobSpec& spec, const JobResult& r) {
                 std::string(to_string(classify(*r.quality))).c_str(), r.quality->max_deviation_um,
                 r.quality->rms_deviation_um, 100 * r.quality->coverage, r.quality->dose_ratio_max,
                 r.quality->overshoot_um);
+  if (r.pulses)
+    std::printf("pulses: %.1f µm apart at %.0f kHz on a %.0f µm spot, overlap %.0f %%%s\n",
+                r.pulses->spacing_max_um, r.pulses->frequency_khz, r.pulses->spot_diameter_um,
+                100 * r.pulses->overlap(), r.pulses->separate_dots() ? " — separate dots" : "");
 }
 
 // Where a job that did not finish stopped, on one line (stderr).
@@ -230,6 +203,7 @@ void require_quality(const JobSpec& spec, const std::string& name) {
 }
 
 int run_mark(const MarkArgs& a) {
+  if (a.text.empty()) throw InputError("mark: give the text to mark, or --job FILE");
   const JobSpec spec = make_spec(a);
   // Every file the job writes is checked before anything is fired.
   if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
@@ -275,19 +249,57 @@ int run_mark(const MarkArgs& a) {
                  "marker: warning: poor mark predicted (max deviation %.1f µm, coverage %.2f %%, "
                  "dose ratio %.2f): lower --speed\n",
                  r.quality->max_deviation_um, 100 * r.quality->coverage, r.quality->dose_ratio_max);
+  if (r.pulses && r.pulses->separate_dots())
+    std::fprintf(stderr,
+                 "marker: warning: pulses land %.1f µm apart on a %.0f µm spot: lit strokes show "
+                 "as separate dots; lower --speed\n",
+                 r.pulses->spacing_max_um, r.pulses->spot_diameter_um);
   return 0;
+}
+
+// The options of `mark` that belong to one mode only: the command line's text and pen, or the
+// job file's production run.
+struct MarkModes {
+  CLI::App* sub = nullptr;
+  std::vector<const CLI::Option*> production;  // --job and what only it takes
+  std::vector<const CLI::Option*> shared;      // either mode
+};
+
+int run_mark_mode(const MarkArgs& a, const MarkModes& modes) {
+  const auto in = [](const std::vector<const CLI::Option*>& list, const CLI::Option* o) {
+    return std::find(list.begin(), list.end(), o) != list.end();
+  };
+  if (a.production.job.empty()) {
+    for (const CLI::Option* o : modes.production)
+      if (o->count() > 0) throw InputError(o->get_name() + " applies to a production run: give --job FILE");
+    return run_mark(a);
+  }
+  for (const CLI::Option* o : modes.sub->get_options())
+    if (o->count() > 0 && !in(modes.production, o) && !in(modes.shared, o))
+      throw InputError((o->nonpositional() ? o->get_name() : std::string("a text to mark")) +
+                       " does not apply with --job: the job file sets it (see marker job check)");
+  MarkJobArgs job = a.production;
+  job.device = modes.sub->count("--device") ? a.device : "";
+  job.inject = a.inject;
+  job.virtual_time = a.virtual_time;
+  job.json = a.json;
+  return run_mark_job(job);
 }
 
 }  // namespace
 
 Command make_mark_command() {
   auto a = std::make_shared<MarkArgs>();
+  auto modes = std::make_shared<MarkModes>();
   return Command(
-      [a](CLI::App& app) {
-        auto* sub = app.add_subcommand("mark", "mark the text on a device (default: the simulated scanner)");
-        sub->add_option("text", a->text, "text to mark (UTF-8; \\n starts a new line)")->required();
+      [a, modes](CLI::App& app) {
+        auto* sub = app.add_subcommand("mark", "mark the text, or the parts of a job file, on a device (default: the simulated scanner)");
+        modes->sub = sub;
+        sub->add_option("text", a->text, "text to mark (UTF-8; \\n starts a new line); or --job FILE");
         add_layout_options(*sub, a->layout);
-        sub->add_option("--device", a->device, "device: sim (the simulated scanner)")->capture_default_str();
+        modes->shared.push_back(
+            sub->add_option("--device", a->device, "device: sim (the simulated scanner); with --job the job's")
+                ->capture_default_str());
         sub->add_option("--head", a->head, "scan head preset: SL10, SL14, cheap")->capture_default_str();
         sub->add_option("--corner", a->corner, "corner strategy: blanking, delays, none")->capture_default_str();
         sub->add_option("--order", a->order, "stroke order: glyph, shortest (least jumping)")->capture_default_str();
@@ -310,16 +322,30 @@ Command make_mark_command() {
         sub->add_option("--dose-png", a->dose_png, "write the raw dose raster as a PNG");
         sub->add_option("--trace", a->trace,
                         "write one CSV row per sample: t_s,cmd_x_mm,cmd_y_mm,laser,beam_x_mm,beam_y_mm");
-        sub->add_option("--inject", a->inject,
-                        "fault injection: underrun@N, abort@N or fault@N (N: sample index)");
+        modes->shared.push_back(sub->add_option(
+            "--inject", a->inject,
+            "fault injection: underrun@N, abort@N or fault@N (N: sample index; with --job in every "
+            "object's device job)"));
         sub->add_option("--require-quality", a->require_quality,
                         "refuse to fire unless the simulator predicts this class: high, good");
-        sub->add_flag("--virtual-time", a->virtual_time,
-                      "drain as fast as the device accepts (device time is still reported)");
-        sub->add_flag("--json", a->json, "print one JSON object with the job's figures");
+        modes->shared.push_back(sub->add_flag("--virtual-time", a->virtual_time,
+                                              "drain as fast as the device accepts (device time is still reported)"));
+        modes->shared.push_back(sub->add_flag(
+            "--json", a->json, "print one JSON object with the job's figures (--job: one per part, JSON Lines)"));
+        MarkJobArgs& p = a->production;
+        modes->production = {
+            sub->add_option("--job", p.job, "production run: mark the parts of this job file"),
+            sub->add_option("--set", p.sets, "--job: variable value NAME=VALUE (repeatable)"),
+            add_ranged_option(*sub, "--count", p.count, "--job: parts to mark, each with its next serial numbers",
+                              kPartCountRange)
+                ->capture_default_str(),
+            sub->add_option("--store", p.store, "--job: serial store, SQLite file or postgresql://… (default: next to the job)"),
+            sub->add_option("--station", p.station, "--job: station name in the audit log (default: host name)"),
+            add_ranged_option(*sub, "--remark", p.remark,
+                              "--job: mark the part of audit row ID again (no number consumed)", kAuditRowRange)};
         return sub;
       },
-      [a] { return run_mark(*a); });
+      [a, modes] { return run_mark_mode(*a, *modes); });
 }
 
 }  // namespace mark::cli

@@ -5,7 +5,7 @@
 #include "fonts/error.hpp"
 #include "marker/job/device_program.hpp"
 #include "marker/job/intended_strokes.hpp"
-#include "marker/job/job_checks.hpp"
+#include "marker/job/job_compiler.hpp"
 #include "marker/job/job_run.hpp"
 #include "marker/locus/locus_generator.hpp"
 
@@ -25,28 +25,29 @@ double seconds_since(JobClock::time_point t0) {
 }
 
 CompiledJob compile_job(const JobSpec& spec, DeviceLevel level) {
-  if (spec.text.empty()) throw InputError("the text to mark is empty");
-  if (!spec.font) throw InputError("no font given for the text to mark");
-  check_pen(spec.pen, spec.head);
+  check_spec(spec, spec.text);
   CompiledJob job;
+  job.level = level;
   job.figure = layout_text(spec.text, *spec.font, spec.layout);
-  // The letters themselves first, so the message says which part leaves the field.
-  if (!job.figure.bounds().empty())
-    require_inside(job.figure.bounds(), Field{spec.head.field_mm}, "the text layout");
+  check_layout(job.figure, spec);
   job.plan = level == DeviceLevel::commands ? plan_for_device(job.figure, spec.pen, spec.order)
                                             : plan_figure(job.figure, spec.pen, spec.order);
-  check_plan(job.plan, spec.head);
-  job.laser_on_ticks = spec.pen.ticks(spec.pen.laser_on_delay_s);
-  job.laser_off_ticks = spec.pen.ticks(spec.pen.laser_off_delay_s);
+  complete_plan(job, spec);
   return job;
 }
 
-JobResult run_job(const JobSpec& spec, const JobOptions& options, Device& device) {
+namespace {
+
+// After the compile: the device's own refusals, begin_job, the stream, end_job.
+JobResult run_on_device(const JobSpec& spec, CompiledJob job, double compiled_s,
+                        JobClock::time_point t0, const JobOptions& options, Device& device) {
   JobResult result;
   const DeviceDescription desc = device.describe();
-  const JobClock::time_point t0 = JobClock::now();
-  result.job = compile_job(spec, desc.level);
-  const double compiled_s = seconds_since(t0);
+  const auto kind = [](DeviceLevel l) { return l == DeviceLevel::samples ? "sample-level" : "command-level"; };
+  if (job.level != desc.level)
+    throw InputError(std::string("the job was compiled for a ") + kind(job.level) + " device; " +
+                     desc.name + " is " + kind(desc.level));
+  result.job = std::move(job);
   if (spec.head.field_mm > desc.field_mm * (1 + 1e-12))
     throw InputError("the job's field (" + std::to_string(spec.head.field_mm) +
                      " mm) is larger than the field of device " + desc.name + " (" +
@@ -74,7 +75,21 @@ JobResult run_job(const JobSpec& spec, const JobOptions& options, Device& device
   result.strokes = result.job.plan.strokes;
   result.jump_length_mm = result.job.plan.jump_length_mm;
   if (result.outcome == JobOutcome::done) result.ink_marked = 1;
+  if (const auto* sim = dynamic_cast<const SimScanner*>(&device)) result.pulses = sim->pulses();
   return result;
+}
+
+}  // namespace
+
+JobResult run_job(const JobSpec& spec, const JobOptions& options, Device& device) {
+  const JobClock::time_point t0 = JobClock::now();
+  CompiledJob job = compile_job(spec, device.describe().level);
+  return run_on_device(spec, std::move(job), seconds_since(t0), t0, options, device);
+}
+
+JobResult run_compiled_job(const JobSpec& spec, CompiledJob job, const JobOptions& options,
+                           Device& device) {
+  return run_on_device(spec, std::move(job), 0, JobClock::now(), options, device);
 }
 
 JobHeader job_header(const JobSpec& spec, const CompiledJob& job, const DeviceDescription& device) {
@@ -103,10 +118,15 @@ SimScannerOptions simulator_options(const JobSpec& spec) {
 JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,
                             const QualityReference* reference) {
   JobResult result = run_job(spec, options, scanner);
-  result.quality = reference ? reference->evaluate(scanner.lit_paths(), scanner.dose())
-                             : evaluate_quality(intended_polylines(result.job.figure),
-                                                scanner.lit_paths(), scanner.dose());
+  result.quality = simulated_quality(result, scanner, reference);
   return result;
+}
+
+Quality simulated_quality(const JobResult& result, const SimScanner& scanner,
+                          const QualityReference* reference) {
+  return reference ? reference->evaluate(scanner.lit_paths(), scanner.dose())
+                   : evaluate_quality(intended_polylines(result.job.figure), scanner.lit_paths(),
+                                      scanner.dose());
 }
 
 }  // namespace mark

@@ -38,10 +38,12 @@ struct JobSpec {
   Pen pen;
   LaserSettings laser;  // the pen's laser source settings
   StrokeOrder order = StrokeOrder::glyph;
+  int passes = 1;       // the strokes are marked this many times over (marker/plan/passes.hpp)
 };
 
-// A job laid out, planned and checked: ready to stream.
+// A job laid out, planned and checked: ready to stream to a device of `level`.
 struct CompiledJob {
+  DeviceLevel level = DeviceLevel::samples;
   Figure figure;
   Plan plan;
   std::size_t laser_on_ticks = 0;   // the laser delay line's edge delays
@@ -50,6 +52,7 @@ struct CompiledJob {
 
 // Layout, plan and every refusal. Throws InputError (or MissingGlyphError) naming the problem.
 // `level` picks the plan a device of that level takes (command-level: no host delay dwells).
+// The parts of a series compile incrementally with a JobCompiler (marker/job/job_compiler.hpp).
 CompiledJob compile_job(const JobSpec& spec, DeviceLevel level = DeviceLevel::samples);
 
 // Fault injection (tests, `marker mark --inject KIND@N`): the drain finds the memory empty from
@@ -103,7 +106,8 @@ struct JobResult {
   double stop_latency_us = -1;
   std::uint64_t stop_latency_samples = 0;
   DeviceReport device;
-  std::optional<Quality> quality;  // when the device is the simulated scanner
+  std::optional<Quality> quality;  // when the device is the simulated scanner (run_job_simulated)
+  std::optional<PulseFigures> pulses;  // when the device is the simulated scanner
   CompiledJob job;                 // what was marked: figure and plan
 };
 
@@ -112,6 +116,10 @@ struct JobResult {
 // InputError for a refused job (the device untouched) and DeviceFaultError when the device
 // cannot start; a fault during the job is in the result (outcome failed), not thrown.
 JobResult run_job(const JobSpec& spec, const JobOptions& options, Device& device);
+// The same for a job compiled beforehand (compile_job or a JobCompiler, for this device's
+// level; InputError otherwise): the device's own refusals (its field) are made here.
+JobResult run_compiled_job(const JobSpec& spec, CompiledJob job, const JobOptions& options,
+                           Device& device);
 // The simulated scanner for a spec: its head, its pen's tick, lit paths recorded.
 SimScannerOptions simulator_options(const JobSpec& spec);
 // Runs the job on that scanner and evaluates the quality figures against the figure's intended
@@ -119,5 +127,9 @@ SimScannerOptions simulator_options(const JobSpec& spec);
 // search reuses one). The scanner keeps the dose for a preview.
 JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,
                             const QualityReference* reference = nullptr);
+// The quality figures of the job `result` just ran on `scanner` (how run_job_simulated gets
+// them), against its figure's intended strokes or `reference`.
+Quality simulated_quality(const JobResult& result, const SimScanner& scanner,
+                          const QualityReference* reference = nullptr);
 
 }  // namespace mark

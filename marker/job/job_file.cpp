@@ -62,15 +62,16 @@ nlohmann::json parse_strict(std::string_view text, const std::string& file) {
   return j;
 }
 
-HeadModel parse_head(JsonReader& top, double& spot_um) {
+HeadModel parse_head(JsonReader& top) {
   const nlohmann::json* h = top.raw("head");
   std::string model = "SL10";
+  std::optional<double> spot_um;
   if (h && h->is_string()) {
     model = h->get<std::string>();
   } else if (h) {
     JsonReader head = top.object("head");
     model = head.string("model").value_or(model);
-    spot_um = head.number("spot_diameter_um", kSpotRange).value_or(spot_um);
+    spot_um = head.number("spot_diameter_um", kSpotRange);
     head.finish();
   }
   const auto found = find_head(model);
@@ -79,7 +80,9 @@ HeadModel parse_head(JsonReader& top, double& spot_um) {
     for (const std::string& n : head_names()) names += (names.empty() ? "" : ", ") + n;
     top.fail(h && h->is_object() ? "head.model" : "head", "\"" + model + "\" is not a head (" + names + ")");
   }
-  return *found;
+  HeadModel head = *found;
+  if (spot_um) head.spot_diameter_um = *spot_um;
+  return head;
 }
 
 CounterSpec parse_counter(JsonReader c, const std::string& name, const TimeZone& job_zone) {
@@ -187,7 +190,7 @@ JobFile parse_job(std::string_view text, const std::string& source) {
     top.fail("format", "\"" + *format + "\" is not a format this program reads (" + std::string(kJobFormat) + ")");
   job.job_name = top.string("name").value_or(std::filesystem::path(source).stem().string());
   job.device = top.choice("device", {"sim"}).value_or("sim");
-  job.head = parse_head(top, job.spot_diameter_um);
+  job.head = parse_head(top);
   job.head.field_mm = top.number("field_mm", kFieldRange).value_or(job.head.field_mm);
   if (auto z = top.string("time_zone")) {
     try {

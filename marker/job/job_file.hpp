@@ -57,8 +57,7 @@ struct JobFile {
   std::string source;          // the file name, for messages
   std::string job_name;        // "name", or the file's stem
   std::string device = "sim";
-  HeadModel head = head_sl10();   // with the job's field size
-  double spot_diameter_um = 40;   // focused spot, for pulse overlap
+  HeadModel head = head_sl10();   // with the job's field size and spot diameter
   TimeZone time_zone = TimeZone::named("local");
   ShiftTable shifts;
   std::map<std::string, std::string> variables;  // defaults; --set overrides

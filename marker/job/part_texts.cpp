@@ -40,8 +40,29 @@ std::vector<ObjectText> render_objects(const JobFile& job,
   v.counters = &job.counters;
   v.serials = &serials;
   std::vector<ObjectText> texts;
-  for (const JobObject& o : job.objects)
-    if (const TextObject* t = o.text()) texts.push_back({o.name, render(t->text, v)});
+  for (std::size_t i = 0; i < job.objects.size(); ++i) {
+    const JobObject& o = job.objects[i];
+    const TextObject* t = o.text();
+    if (!t) continue;
+    try {
+      texts.push_back({o.name, render(t->text, v)});
+    } catch (const InputError& e) {
+      throw InputError(object_place(job, i) + e.what());
+    }
+  }
+  return texts;
+}
+
+std::vector<ObjectText> first_part_texts(const JobFile& job,
+                                         const std::map<std::string, std::string>& variables,
+                                         SysTime now, std::map<std::string, std::int64_t>* serials) {
+  std::map<std::string, std::int64_t> starts;
+  for (const auto& [name, spec] : job.used_counters()) starts[name] = spec.start;
+  auto vars = variables;
+  for (const std::string& v : job.required_variables())
+    if (!vars.count(v)) vars[v] = "<" + v + ">";
+  std::vector<ObjectText> texts = render_objects(job, vars, now, starts);
+  if (serials) *serials = std::move(starts);
   return texts;
 }
 
@@ -71,8 +92,17 @@ JobSpec object_spec(const JobFile& job, const JobObject& object, const std::stri
   spec.layout = t.layout;
   spec.head = job.head;
   spec.pen = pen.motion;
+  spec.laser = pen.laser;
+  spec.passes = pen.passes;
   spec.order = t.order;
   return spec;
+}
+
+std::string object_place(const JobFile& job, std::size_t i) {
+  std::string place = job.source;
+  place.append(": objects[").append(std::to_string(i)).append("] \"");
+  place.append(job.objects.at(i).name).append("\": ");
+  return place;
 }
 
 }  // namespace mark

@@ -23,6 +23,13 @@ std::vector<ObjectText> render_objects(const JobFile& job,
                                        SysTime now,
                                        const std::map<std::string, std::int64_t>& serials);
 
+// The texts of a first part on a fresh store (`job check`, `job new --speed auto`): every
+// counter at its start (given back in `serials`), variables without a value shown as <name>.
+std::vector<ObjectText> first_part_texts(const JobFile& job,
+                                         const std::map<std::string, std::string>& variables,
+                                         SysTime now,
+                                         std::map<std::string, std::int64_t>* serials = nullptr);
+
 class JobFonts {
  public:
   // Opens every object's font (warnings to `warnings`); throws InputError naming the object.
@@ -33,7 +40,12 @@ class JobFonts {
   std::map<std::string, std::shared_ptr<const StrokeFont>> fonts_;
 };
 
+// Object i's spec: its text, font and layout, its pen's motion and laser settings and passes,
+// the job's head.
 JobSpec object_spec(const JobFile& job, const JobObject& object, const std::string& text,
                     const JobFonts& fonts);
+
+// Where object i is, for messages: `job.json: objects[1] "lot": `.
+std::string object_place(const JobFile& job, std::size_t i);
 
 }  // namespace mark

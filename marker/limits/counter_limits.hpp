@@ -13,5 +13,8 @@ inline const WholeRange kMarksPerSerialRange{1, 1'000'000};
 inline const WholeRange kCounterWidthRange{0, 64};                 // digits; 0: as many as needed
 // One reservation issues at most this many values (one audit row each).
 inline const WholeRange kReserveCountRange{1, 1'000'000};
+// Parts one `mark --job` marks (each with its own serial numbers), and an audit row's id.
+inline const WholeRange kPartCountRange{1, 1'000'000'000};
+inline const WholeRange kAuditRowRange{1, INT64_MAX};
 
 }  // namespace mark

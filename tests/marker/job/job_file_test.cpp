@@ -58,7 +58,7 @@ TEST(JobFile, ReadsEveryField) {
   EXPECT_EQ(job.job_name, "bracket");
   EXPECT_EQ(job.head.name, "SL14");
   EXPECT_DOUBLE_EQ(job.head.field_mm, 100);
-  EXPECT_DOUBLE_EQ(job.spot_diameter_um, 50);
+  EXPECT_DOUBLE_EQ(job.head.spot_diameter_um, 50);
   EXPECT_EQ(job.time_zone.name(), "Europe/Berlin");
   ASSERT_EQ(job.shifts.shifts().size(), 3u);
   EXPECT_EQ(job.variables.at("lot"), "A00");

@@ -1,5 +1,6 @@
-// Never repeat, never lose — under SIGKILL. A child process marks parts in a loop (allocate →
-// mark on the simulated scanner → record the outcome) on one SQLite store; the parent kills it
+// Never repeat, never lose — under SIGKILL. A child process marks parts in a loop through the
+// production path (PartRunner: allocate → mark on the simulated scanner → record the outcome)
+// on one SQLite store; the parent kills it
 // with SIGKILL at a random instant, again and again, then checks the store: no value issued
 // twice, every issued value with exactly one audit row, every value a child was told it got
 // still there, every part a child saw finish recorded done, no row left open, and the counter
@@ -22,9 +23,7 @@
 #include <sstream>
 #include <thread>
 
-#include "fonts/catalog.hpp"
-#include "marker/job/head_pen.hpp"
-#include "marker/job/job.hpp"
+#include "marker/job/part_run.hpp"
 #include "marker/store/digest.hpp"
 #include "marker/store/utc_time.hpp"
 #include "store_test_support.hpp"
@@ -41,58 +40,55 @@ struct Shared {
   std::atomic<long long> parts;
 };
 
-// The mark itself: the rendered text on the simulated SL10 head, in virtual time.
-nlohmann::json mark_on_simulator(const std::string& text) {
-  static const std::shared_ptr<const StrokeFont> font = open_font(kBuiltinFontName);
-  JobSpec spec;
-  spec.text = text;
-  spec.font = font;
-  spec.layout.height_mm = 1;
-  spec.head = head_sl10();
-  spec.pen = pen_for_head(spec.head, CornerStrategy::blanking, 1000);
-  JobOptions options;
-  options.virtual_time = true;
-  SimScanner scanner(simulator_options(spec));
-  const JobResult r = run_job_simulated(spec, options, scanner);
-  return {{"samples", r.samples}, {"mark_time_s", r.mark_time_s},
-          {"max_deviation_um", r.quality->max_deviation_um}};
-}
+// The job the child marks: the serial at 1 mm on the simulated SL10 head.
+constexpr const char* kKillJob = R"({
+  "format": "marker-job/1",
+  "time_zone": "UTC",
+  "counters": {"sn": {"start": 1}},
+  "pens": {"p": {"speed_mm_s": 1000}},
+  "objects": [{"name": "serial", "template": "{sn}", "height_mm": 1}]
+})";
 
+// The production path itself (PartRunner: allocate, mark on the simulator in virtual time,
+// record), its phases told to the parent through shared memory and the values on a pipe.
 [[noreturn]] void child_loop(const std::string& path, Shared* shared, int out_fd) {
   shared->phase = starting;
+  const JobFile job = parse_job(kKillJob, "kill.json");
+  const JobFonts fonts(job);
   MarkContext ctx;
   ctx.station = "kill-test";
   ctx.job = "kill.json";
-  ctx.job_sha256 = sha256_hex("kill.json");
-  const std::map<std::string, CounterSpec> counters{{"sn", test::plain_counter()}};
-  const ShiftTable shifts;
+  ctx.job_sha256 = sha256_hex(kKillJob);
   auto store = open_store(path, StoreAccess::create);
-  mark_on_simulator("SN 0");  // font and code paths warm before the first part
+  SimScanner scanner(simulator_options(object_spec(job, job.objects.front(), "", fonts)));
   ctx.now = SystemClock().now();
   store->start_station(ctx);
+  PartRunner runner(job, fonts, {}, scanner, *store, ctx);
   auto say = [&](char what, std::int64_t v) {
     char line[48];
     const int n = std::snprintf(line, sizeof line, "%c %lld\n", what, static_cast<long long>(v));
     if (write(out_fd, line, static_cast<std::size_t>(n)) != n) _exit(3);
   };
+  PartOptions options;
+  options.job.virtual_time = true;
+  options.phase = [&](PartPhase p, const std::map<std::string, std::int64_t>& serials) {
+    switch (p) {
+      case PartPhase::allocating: shared->phase = allocating; break;
+      case PartPhase::marking:
+        say('A', serials.at("sn"));
+        shared->phase = marking;
+        break;
+      case PartPhase::recording: shared->phase = recording; break;
+      case PartPhase::finished:
+        shared->phase = between;
+        say('D', serials.at("sn"));
+        ++shared->parts;
+        break;
+    }
+  };
   for (;;) {
-    ctx.now = SystemClock().now();
-    shared->phase = allocating;
-    const Allocation a = store->allocate(counters, shifts, ctx, [](const auto& serials) {
-      char text[32];
-      std::snprintf(text, sizeof text, "%lld", static_cast<long long>(serials.at("sn")));
-      return std::vector<ObjectText>{{"serial", text}};
-    });
-    say('A', a.serials.at("sn"));
-    shared->phase = marking;
-    OutcomeRecord o;
-    o.figures = mark_on_simulator(a.objects[0].text);
-    shared->phase = recording;
-    o.time_utc = format_utc(SystemClock().now());
-    store->record_outcome(a.mark_id, o);
-    shared->phase = between;
-    say('D', a.serials.at("sn"));
-    ++shared->parts;
+    const PartResult part = runner.mark_next(SystemClock().now(), options);
+    if (part.outcome != JobOutcome::done) _exit(4);
   }
 }
 

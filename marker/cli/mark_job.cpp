@@ -1,0 +1,142 @@
+#include "marker/cli/mark_job.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+#include "driver/quality_class.hpp"
+#include "fonts/error.hpp"
+#include "marker/limits/counter_limits.hpp"
+#include "marker/cli/device_factory.hpp"
+#include "marker/cli/inject_option.hpp"
+#include "marker/cli/interrupt.hpp"
+#include "marker/cli/production_options.hpp"
+#include "marker/job/part_json.hpp"
+#include "marker/job/part_run.hpp"
+#include "marker/store/open_store.hpp"
+
+namespace mark::cli {
+namespace {
+
+
+std::string serials_text(const std::map<std::string, std::int64_t>& serials) {
+  std::string s;
+  for (const auto& [name, value] : serials)
+    s.append(s.empty() ? "" : " ").append(name).append("=").append(std::to_string(value));
+  return s;
+}
+
+void print_part(const PartResult& p, long long index, long long count) {
+  std::string text = p.text();
+  for (char& c : text)
+    if (c == '\n') c = '|';
+  std::printf("part %lld/%lld  id %lld  %s%s\"%s\"  %s  %.4f s", index, count,
+              static_cast<long long>(p.mark_id),
+              p.remark_of ? ("re-mark of " + std::to_string(*p.remark_of) + "  ").c_str() : "",
+              p.serials.empty() ? "" : (serials_text(p.serials) + "  ").c_str(), text.c_str(),
+              std::string(to_string(p.outcome)).c_str(), p.mark_time_s);
+  if (p.quality)
+    std::printf(", quality %s (max deviation %.1f µm, coverage %.2f %%)",
+                std::string(to_string(classify(*p.quality))).c_str(), p.quality->max_deviation_um,
+                100 * p.quality->coverage);
+  if (p.pulses)
+    std::printf(", pulses %.1f µm apart (overlap %.0f %%)", p.pulses->spacing_max_um,
+                100 * p.pulses->overlap());
+  std::printf("\n");
+  std::fflush(stdout);
+}
+
+// Ctrl-C, an injected abort or a fault: where the part stopped, on one line (stderr).
+void print_stop(const PartResult& p, long long index) {
+  const bool interrupted = p.outcome == JobOutcome::aborted && interrupt_flag().requested();
+  std::fprintf(stderr, "marker: part %lld (id %lld) %s: %s%s\n", index,
+               static_cast<long long>(p.mark_id),
+               interrupted ? "interrupted" : std::string(to_string(p.outcome)).c_str(),
+               p.message.c_str(),
+               p.serials.empty() || p.remark_of
+                   ? ""
+                   : ("; its numbers are void (" + serials_text(p.serials) + ")").c_str());
+}
+
+}  // namespace
+
+int run_mark_job(const MarkJobArgs& a) {
+  // The option's validator checks this on the command line; callers from code get the same words.
+  if (!kPartCountRange.contains(a.count))
+    throw InputError("--count: " + std::to_string(a.count) + " is outside the range " + kPartCountRange.text());
+  if (a.remark && (a.count != 1 || !a.sets.empty()))
+    throw InputError("--remark " + std::to_string(*a.remark) +
+                     " marks one part again with its recorded texts: --count and --set do not apply");
+  std::string bytes;
+  const JobFile job = read_job_file(a.job, &bytes);
+  const auto variables = job_variables(job, parse_sets(a.sets));
+  for (const std::string& v : job.required_variables())
+    if (!a.remark && !variables.count(v))
+      throw InputError(a.job + ": {var:" + v + "} has no default in the job: give --set " + v + "=VALUE");
+  std::vector<std::string> warnings;
+  const JobFonts fonts(job, &warnings);
+  for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
+  const InjectArg inject = a.inject.empty() ? InjectArg{} : parse_inject(a.inject);
+
+  SimSettings sim;
+  sim.fault_at = inject.device_fault_at;
+  const std::unique_ptr<Device> device = open_device(
+      a.device.empty() ? job.device : a.device, object_spec(job, job.objects.front(), "", fonts), sim);
+
+  const std::string where = store_location(a.store, a.job);
+  auto store = open_store(where, a.remark ? StoreAccess::existing : StoreAccess::create);
+  MarkContext context = mark_context(a.station, a.job, bytes);
+  context.now = SystemClock().now();
+  const std::vector<std::int64_t> closed = store->start_station(context);
+  if (!closed.empty()) {
+    std::string ids;
+    for (std::int64_t id : closed) ids.append(ids.empty() ? "" : ", ").append(std::to_string(id));
+    std::fprintf(stderr,
+                 "marker: station %s: %zu part(s) a previous run left without an outcome (id %s) "
+                 "recorded aborted; their numbers are void\n",
+                 context.station.c_str(), closed.size(), ids.c_str());
+  }
+  PartRunner runner(job, fonts, variables, *device, *store, context);
+
+  PartOptions options;
+  options.job.virtual_time = a.virtual_time;
+  options.job.stop = &interrupt_flag();
+  options.job.inject = inject.drain;
+  bool warned_dots = false, warned_poor = false;
+  for (long long i = 1; i <= a.count; ++i) {
+    if (interrupt_flag().requested()) {
+      std::fprintf(stderr, "marker: interrupted after part %lld of %lld; no further part started\n",
+                   i - 1, a.count);
+      return kExitInterrupted;
+    }
+    const PartResult p = a.remark ? runner.remark(*a.remark, SystemClock().now(), options)
+                                  : runner.mark_next(SystemClock().now(), options);
+    if (a.json) {
+      nlohmann::json line = part_line(p);
+      line["part"] = i;
+      std::cout << line.dump() << std::endl;  // flushed: a reader follows the run part by part
+    } else {
+      print_part(p, i, a.count);
+    }
+    if (p.outcome != JobOutcome::done) {
+      print_stop(p, i);
+      return p.outcome == JobOutcome::aborted ? kExitInterrupted : 1;
+    }
+    if (p.pulses && p.pulses->separate_dots() && !warned_dots) {
+      warned_dots = true;
+      std::fprintf(stderr,
+                   "marker: warning: pulses land %.1f µm apart on a %.0f µm spot: lit strokes show "
+                   "as separate dots; lower the pen's speed or raise its frequency\n",
+                   p.pulses->spacing_max_um, p.pulses->spot_diameter_um);
+    }
+    if (p.quality && classify(*p.quality) == QualityClass::poor && !warned_poor) {
+      warned_poor = true;
+      std::fprintf(stderr,
+                   "marker: warning: poor mark predicted (max deviation %.1f µm, coverage %.2f %%, "
+                   "dose ratio %.2f): lower the pen's speed\n",
+                   p.quality->max_deviation_um, 100 * p.quality->coverage, p.quality->dose_ratio_max);
+    }
+  }
+  return 0;
+}
+
+}  // namespace mark::cli

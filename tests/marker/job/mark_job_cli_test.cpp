@@ -1,0 +1,271 @@
+// `marker mark --job` as a line runs it: job new → job check → mark three parts → log, the
+// variables of --set, an abort (injected, and Ctrl-C on the real binary) recorded with its
+// number void and the next run continuing after it, a failing device, a re-mark, and the
+// options that belong to one mode only.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "marker/store/open_store.hpp"
+#include "tests/marker/cli_runner.hpp"
+
+namespace mark {
+namespace {
+
+using test::run_cli;
+
+std::vector<nlohmann::json> json_lines(const std::string& out) {
+  std::vector<nlohmann::json> lines;
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);) lines.push_back(nlohmann::json::parse(line));
+  return lines;
+}
+
+struct MarkJobCli : testing::Test {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                              ("marker-mark-job-" + std::to_string(::getpid()));
+  std::string job = (dir / "bracket.json").string();
+  std::string store = (dir / "bracket.serials.sqlite").string();
+  void SetUp() override {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const auto r = run_cli({"job", "new", "-o", job, "--text", "SN {serial} LOT {var:lot}",
+                            "--width", "6", "--start", "41", "--height", "3", "--x", "-20",
+                            "--power", "80", "--frequency", "40", "--var", "lot=A00"});
+    ASSERT_EQ(r.code, 0) << r.err;
+  }
+  void TearDown() override { std::filesystem::remove_all(dir); }
+  test::CliResult mark(std::vector<std::string> extra) {
+    std::vector<std::string> args{"mark", "--job", job, "--virtual-time", "--station", "line-1"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_cli(args);
+  }
+  nlohmann::json serial() {
+    return nlohmann::json::parse(run_cli({"serial", "show", "serial", "--job", job, "--json"}).out);
+  }
+  std::vector<nlohmann::json> log() { return json_lines(run_cli({"log", "--job", job, "--json"}).out); }
+};
+
+TEST_F(MarkJobCli, NewCheckMarkThreePartsAndLog) {
+  auto r = run_cli({"job", "check", job, "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto check = nlohmann::json::parse(r.out);
+  EXPECT_EQ(check["objects"][0]["text"], "SN 000041 LOT A00");
+  // job new --speed auto wrote the speed `mark --speed auto` picks for 3 mm text.
+  const double speed = check["objects"][0]["pulse_spacing_um"].get<double>() * 40;
+  EXPECT_GT(speed, 600);
+  EXPECT_LE(speed, 1000);
+
+  r = mark({"--count", "3", "--json", "--set", "lot=A17"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto parts = json_lines(r.out);
+  ASSERT_EQ(parts.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    const nlohmann::json& p = parts[i];
+    EXPECT_EQ(p["part"], i + 1);
+    EXPECT_EQ(p["text"], "SN 0000" + std::to_string(41 + i) + " LOT A17");
+    EXPECT_EQ(p["serials"], nlohmann::json({{"serial", 41 + i}}));
+    EXPECT_EQ(p["outcome"], "done");
+    EXPECT_EQ(p["kind"], "mark");
+    EXPECT_EQ(p["quality"]["class"], "high");
+    EXPECT_FALSE(p["quality"]["separate_dots"].get<bool>());
+    EXPECT_NEAR(p["pulse_spacing_um"].get<double>(), speed / 40, 0.02 * speed / 40);
+    EXPECT_NEAR(p["pulse_overlap_fraction"].get<double>(), 1 - p["pulse_spacing_um"].get<double>() / 40, 1e-9);
+    EXPECT_GT(p["mark_time_s"].get<double>(), 0.05);
+    EXPECT_EQ(p["objects"][0]["device_figures"]["power_pct"], 80.0);
+    EXPECT_EQ(p["objects"][0]["device_figures"]["frequency_khz"], 40.0);
+    EXPECT_EQ(p["device"], "sim SL10");
+  }
+  const auto rows = log();
+  ASSERT_EQ(rows.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(rows[i]["id"], parts[i]["mark_id"]);
+    EXPECT_EQ(rows[i]["text"], parts[i]["text"]);
+    EXPECT_EQ(rows[i]["serials"], parts[i]["serials"]);
+    EXPECT_EQ(rows[i]["outcome"], "done");
+    EXPECT_EQ(rows[i]["station"], "line-1");
+    EXPECT_EQ(rows[i]["figures"]["pulse_spacing_um"], parts[i]["pulse_spacing_um"]);
+    EXPECT_EQ(rows[i]["figures"]["quality"], parts[i]["quality"]);
+  }
+  EXPECT_EQ(serial()["next"], 44);
+  EXPECT_EQ(serial()["highest_issued"], 43);
+
+  // The text form: one line per part.
+  r = mark({"--count", "2"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 2);
+  EXPECT_EQ(r.out.rfind("part 1/2  id 4  serial=44  \"SN 000044 LOT A00\"  done  ", 0), 0u) << r.out;
+}
+
+TEST_F(MarkJobCli, AnAbortIsRecordedVoidAndTheNextRunContinuesAfterIt) {
+  auto r = mark({"--count", "3", "--json", "--inject", "abort@2000"});
+  EXPECT_EQ(r.code, 130);
+  auto parts = json_lines(r.out);
+  ASSERT_EQ(parts.size(), 1u) << "no part after the aborted one";
+  EXPECT_EQ(parts[0]["outcome"], "aborted");
+  EXPECT_EQ(parts[0]["stopped_at"]["at"], 2000);
+  EXPECT_EQ(parts[0]["objects"][0]["stopped_at"], 2000);
+  EXPECT_EQ(r.err.rfind("marker: part 1 (id 1) aborted: object \"text\" (1 of 1) aborted at sample 2000: ", 0), 0u)
+      << r.err;
+  EXPECT_NE(r.err.find("laser off; its numbers are void (serial=41)"), std::string::npos) << r.err;
+  EXPECT_EQ(serial()["next"], 42);
+
+  r = mark({"--count", "2", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  parts = json_lines(r.out);
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_EQ(parts[0]["serials"]["serial"], 42);
+  EXPECT_EQ(parts[1]["serials"]["serial"], 43);
+  const auto rows = log();
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0]["outcome"], "aborted");
+  EXPECT_EQ(rows[0]["serials"]["serial"], 41);
+  EXPECT_NE(rows[0]["message"].get<std::string>().find("aborted at sample 2000"), std::string::npos);
+}
+
+TEST_F(MarkJobCli, AFailingDeviceIsRecordedFailed) {
+  const auto r = mark({"--count", "2", "--json", "--inject", "fault@700"});
+  EXPECT_EQ(r.code, 1);
+  const auto parts = json_lines(r.out);
+  ASSERT_EQ(parts.size(), 1u);
+  EXPECT_EQ(parts[0]["outcome"], "failed");
+  EXPECT_EQ(parts[0]["objects"][0]["fault"]["category"], "device");
+  EXPECT_EQ(parts[0]["objects"][0]["fault"]["at"], 700);
+  EXPECT_NE(r.err.find("failed (device: simulated scanner (SL10): injected device fault at sample 700"),
+            std::string::npos)
+      << r.err;
+  const auto rows = log();
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0]["outcome"], "failed");
+  EXPECT_EQ(serial()["next"], 42);
+}
+
+TEST_F(MarkJobCli, SetVariablesAndTheirRefusals) {
+  auto r = mark({"--json", "--set", "lot=B-9"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(json_lines(r.out)[0]["text"], "SN 000041 LOT B-9");
+  r = mark({"--set", "lott=B9"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "marker: --set lott=…: no template of " + job + " uses {var:lott}\n");
+  r = mark({"--set", "B9"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "marker: --set 'B9': expected NAME=VALUE, e.g. --set lot=A17\n");
+  // A variable without a default must be set.
+  ASSERT_EQ(run_cli({"job", "new", "-o", job, "--force", "--text", "LOT {var:lot}", "--x", "-20"}).code, 0);
+  r = mark({});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "marker: " + job + ": {var:lot} has no default in the job: give --set lot=VALUE\n");
+  EXPECT_EQ(log().size(), 1u) << "the refused runs consumed nothing";
+}
+
+TEST_F(MarkJobCli, ARemarkLinksTheRowAndTakesNoNumber) {
+  ASSERT_EQ(mark({"--count", "2"}).code, 0);
+  auto r = mark({"--remark", "1", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto part = json_lines(r.out).at(0);
+  EXPECT_EQ(part["kind"], "remark");
+  EXPECT_EQ(part["remark_of"], 1);
+  EXPECT_EQ(part["serials"]["serial"], 41);
+  EXPECT_EQ(part["text"], "SN 000041 LOT A00");
+  EXPECT_EQ(serial()["next"], 43);
+  const auto rows = log();
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[2]["kind"], "remark");
+  EXPECT_EQ(rows[2]["remark_of"], 1);
+  EXPECT_EQ(rows[2]["outcome"], "done");
+  r = mark({"--remark", "1", "--count", "2"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("--count and --set do not apply"), std::string::npos) << r.err;
+}
+
+TEST_F(MarkJobCli, OptionsOfTheOtherModeAreRefused) {
+  auto r = mark({"--speed", "500"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "marker: --speed does not apply with --job: the job file sets it (see marker job check)\n");
+  r = run_cli({"mark", "ABC", "--job", job});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "marker: a text to mark does not apply with --job: the job file sets it (see marker job check)\n");
+  r = run_cli({"mark", "ABC", "--count", "3", "--virtual-time"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "marker: --count applies to a production run: give --job FILE\n");
+  r = run_cli({"mark"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "marker: mark: give the text to mark, or --job FILE\n");
+  r = mark({"--count", "0"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "marker: --count: 0 is outside the range 1 to 1000000000\n");
+  EXPECT_FALSE(std::filesystem::exists(store)) << "nothing refused may create the store";
+}
+
+TEST_F(MarkJobCli, CtrlCFinishesThePartAbortedAndStartsNoOther) {
+  // The real binary in real time, parts of several seconds (50 mm/s); SIGINT once the first
+  // part's number is committed (its audit row exists), so the signal lands while it marks.
+  ASSERT_EQ(run_cli({"job", "new", "-o", job, "--force", "--text", "SN {serial}", "--width", "6",
+                     "--start", "41", "--height", "3", "--x", "-20", "--speed", "50"})
+                .code,
+            0);
+  const std::string binary = std::string(MARKER_BINARY_DIR) + "/marker/marker";
+  const auto out = dir / "run.jsonl", err = dir / "run.err";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    if (!freopen(out.c_str(), "w", stdout) || !freopen(err.c_str(), "w", stderr)) _exit(99);
+    execl(binary.c_str(), binary.c_str(), "mark", "--job", job.c_str(), "--count", "3", "--json",
+          "--station", "line-1", static_cast<char*>(nullptr));
+    _exit(98);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  for (;;) {
+    ASSERT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(60)) << "no part started";
+    if (std::filesystem::exists(store)) {
+      try {
+        if (!open_store(store, StoreAccess::existing)->log().empty()) break;
+      } catch (const std::exception&) {
+        // the child is still creating the store
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  kill(pid, SIGINT);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by the signal instead of finishing the part";
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  std::ifstream in(out);
+  std::stringstream text;
+  text << in.rdbuf();
+  const auto parts = json_lines(text.str());
+  ASSERT_EQ(parts.size(), 1u);
+  EXPECT_EQ(parts[0]["outcome"], "aborted");
+  EXPECT_GT(parts[0]["stopped_at"]["at"].get<int>(), 0);
+  EXPECT_LE(parts[0]["objects"][0]["stop_latency_samples"].get<int>(), 100);
+  EXPECT_LT(parts[0]["objects"][0]["ink_marked_fraction"].get<double>(), 1.0);
+  std::ifstream e(err);
+  std::stringstream said;
+  said << e.rdbuf();
+  EXPECT_EQ(said.str().rfind("marker: part 1 (id 1) interrupted: object \"text\" (1 of 1) aborted at sample ", 0), 0u)
+      << said.str();
+  const auto rows = log();
+  ASSERT_EQ(rows.size(), 1u) << "no further part started";
+  EXPECT_EQ(rows[0]["outcome"], "aborted");
+  // The next run continues after the void number.
+  ASSERT_EQ(run_cli({"job", "new", "-o", job, "--force", "--text", "SN {serial}", "--width", "6",
+                     "--start", "41", "--height", "3", "--x", "-20"})
+                .code,
+            0);
+  const auto r = mark({"--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(json_lines(r.out)[0]["serials"]["serial"], 42);
+}
+
+}  // namespace
+}  // namespace mark

@@ -74,6 +74,10 @@ void JobEncoder::push(const Word& c, double estimated_s) {
 }
 
 void JobEncoder::start_list(double open_mo_delay_s, std::uint16_t port_bits) {
+  // Whatever a failed or aborted list left unsent is dropped here: it must never reach the
+  // board as part of the next list.
+  packet_.clear();
+  packet_estimate_s_ = 0;
   jump_speed_.reset(), mark_speed_.reset(), qswitch_.reset(), power_.reset();
   pulse_width_.reset(), on_delay_.reset(), off_delay_.reset(), polygon_.reset();
   in_run_ = false;

@@ -75,7 +75,7 @@ class JobEncoder {
  public:
   JobEncoder(const FieldUnits& units, PacketSink sink);
 
-  // A new list (after ResetList): ReadyMark, the open-MO delay as DelayTime (0: none), the
+  // A new list (after ResetList): anything left of an earlier list is dropped, then ReadyMark, the open-MO delay as DelayTime (0: none), the
   // output port as WritePort(list). The board's parameters are forgotten (sent again), except
   // the jump delay, which the board keeps and this encoder tracks across lists (see .cpp).
   void start_list(double open_mo_delay_s, std::uint16_t port_bits);

@@ -300,3 +300,35 @@ TEST(LmcEncoder, PenRefusalsNameThePenAndTheValue) {
 
 }  // namespace
 }  // namespace mark::lmc
+
+namespace mark::lmc {
+namespace {
+
+// A list that failed mid-packet (the sink threw) leaves nothing behind for the next list.
+TEST(LmcEncoder, AFailedListLeavesNothingForTheNext) {
+  const FieldUnits units(110);
+  bool fail = true;
+  std::vector<std::vector<Word>> sent;
+  JobEncoder enc(units, [&](const ListPacket& p, const PacketInfo&) {
+    if (fail) throw std::runtime_error("stall");
+    std::vector<Word> words;
+    for (std::size_t i = 0; i < kCommandsPerPacket; ++i) words.push_back(load(p.bytes().data() + 12 * i));
+    sent.push_back(words);
+  });
+  const BoardPen bp = encode_pen(test::golden_pen(), 0, units, LaserSource::fiber);
+  enc.start_list(0.008, 1);
+  enc.apply_pen(bp);
+  EXPECT_THROW(
+      for (int i = 0; i < 300; ++i) enc.add(DeviceCommand::mark_to(1 + 0.01 * i, 0), std::uint64_t(i)),
+      std::runtime_error);
+  fail = false;
+  enc.start_list(0, 1);
+  enc.apply_pen(bp);
+  enc.finish(0);
+  ASSERT_EQ(sent.size(), 1u);
+  EXPECT_EQ(sent[0][0], word(Op::ReadyMark));
+  for (const Word& w : sent[0]) EXPECT_NE(w.opcode(), static_cast<std::uint16_t>(Op::MarkTo));
+}
+
+}  // namespace
+}  // namespace mark::lmc

@@ -310,6 +310,11 @@ BoardState EmulatedBoard::state() const {
   return s;
 }
 
+bool EmulatedBoard::unplugged() const {
+  std::lock_guard lock(mutex_);
+  return unplugged_;
+}
+
 std::vector<WireRecord> EmulatedBoard::wire() const {
   std::lock_guard lock(mutex_);
   return wire_;

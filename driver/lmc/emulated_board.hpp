@@ -112,6 +112,7 @@ class EmulatedBoard : private ListFeed {
 
   // Inspection.
   BoardState state() const;
+  bool unplugged() const;
   std::vector<WireRecord> wire() const;
   std::vector<std::vector<Word>> packets() const;  // every packet received, in order
   std::vector<std::string> violations() const;

@@ -18,31 +18,9 @@ namespace {
 
 using test::LoopbackBench;
 
-double figure(const DeviceReport& r, const std::string& key) {
-  for (const auto& [k, v] : r.figures)
-    if (k == key) return v;
-  ADD_FAILURE() << "no figure " << key;
-  return -1;
-}
-
-// A serpentine of n short marks (0.2 mm, rows of 100) after one jump: at 2000 mm/s each
-// takes 0.1 ms, so a packet of 256 lasts about 26 ms on the board.
-std::vector<DeviceCommand> zigzag(std::size_t n) {
-  std::vector<DeviceCommand> c{DeviceCommand::jump_to(-10, 0)};
-  for (std::size_t i = 1; i <= n; ++i) {
-    const std::size_t row = i / 100, col = i % 100;
-    const double x = -10 + 0.2 * double(row % 2 ? 100 - col : col);
-    c.push_back(DeviceCommand::mark_to(x, 0.1 * double(row) + ((i % 2) ? 0.05 : 0.0)));
-  }
-  return c;
-}
-
-DevicePen fast_pen() {
-  DevicePen p = test::golden_pen();
-  p.mark_speed_mm_s = 2000;
-  p.jump_speed_mm_s = 4000;
-  return p;
-}
+using test::fast_pen;
+using test::figure;
+using test::zigzag;
 
 // What the board should have received for a job: the same encoder, fresh.
 std::vector<std::vector<Word>> expected_packets(const DevicePen& pen,
@@ -79,14 +57,7 @@ void expect_laser_off(const EmulatedBoard& board, const char* when) {
 
 TEST(LmcDevice, InitSequenceGoesOutInOrder) {
   LoopbackBench bench;
-  const std::vector<Word> want = {
-      word(Op::GetSerialNo), word(Op::GetVersion), word(Op::Reset), word(Op::WritePort, 0),
-      word(Op::WriteCorTable, 0), word(Op::EnableLaser), word(Op::SetControlMode, 0),
-      word(Op::SetLaserMode, 1), word(Op::SetDelayMode, 1), word(Op::SetTiming, 1),
-      word(Op::SetStandby, 2000, 20), word(Op::SetFirstPulseKiller, 200),
-      word(Op::SetPwmHalfPeriod, 125), word(Op::SetPwmPulseWidth, 125), word(Op::FiberSetMo, 0),
-      word(Op::SetFpkParam2, 0xFFB, 1, 409, 100), word(Op::SetFlyRes, 0, 99, 1000, 25),
-      word(Op::EnableZ), word(Op::WriteAnalogPort1, 0x7FF), word(Op::EnableZ)};
+  const std::vector<Word> want = test::expected_init();
   const auto got = test::singles(bench.board.wire());
   ASSERT_EQ(got.size(), want.size());
   for (std::size_t i = 0; i < want.size(); ++i)
@@ -146,9 +117,9 @@ TEST(LmcDevice, GoldenJobThroughTheDevice) {
 
   // The singles of the job, after the init: start, the packet's SetEndOfList, ExecuteList
   // (a short job: after its only packet), the status polls, the end.
-  auto singles = test::singles(bench.board.wire());
-  singles.erase(singles.begin(), singles.begin() + 20);
-  ASSERT_GE(singles.size(), 9u);
+  const auto all = test::singles(bench.board.wire());
+  ASSERT_GE(all.size(), 20u + 9u);
+  const std::vector<Word> singles(all.begin() + 20, all.end());
   EXPECT_EQ(singles[0], word(Op::ResetList));
   EXPECT_EQ(singles[1], word(Op::WritePort, 1));
   EXPECT_EQ(singles[2], word(Op::FiberSetMo, 1));

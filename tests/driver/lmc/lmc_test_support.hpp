@@ -1,6 +1,8 @@
 #pragma once
 // Shared pieces of the LMC tests: the golden rectangle of galvo.md §1.9 (meerk40t's test
 // vector), its pen, and a bench of emulated board + LmcDevice over the loopback link.
+#include <gtest/gtest.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,6 +35,18 @@ inline std::vector<Word> golden_rectangle_words() {
       word(Op::DelayTime, 0x001E),
       word(Op::EndOfList),
   };
+}
+
+// The init sequence of galvo.md §1.8 as the driver sends it (with WritePort(0) after Reset and
+// no correction table).
+inline std::vector<Word> expected_init() {
+  return {word(Op::GetSerialNo), word(Op::GetVersion), word(Op::Reset), word(Op::WritePort, 0),
+          word(Op::WriteCorTable, 0), word(Op::EnableLaser), word(Op::SetControlMode, 0),
+          word(Op::SetLaserMode, 1), word(Op::SetDelayMode, 1), word(Op::SetTiming, 1),
+          word(Op::SetStandby, 2000, 20), word(Op::SetFirstPulseKiller, 200),
+          word(Op::SetPwmHalfPeriod, 125), word(Op::SetPwmPulseWidth, 125), word(Op::FiberSetMo, 0),
+          word(Op::SetFpkParam2, 0xFFB, 1, 409, 100), word(Op::SetFlyRes, 0, 99, 1000, 25),
+          word(Op::EnableZ), word(Op::WriteAnalogPort1, 0x7FF), word(Op::EnableZ)};
 }
 
 // The parameters behind it: meerk40t's defaults (galvo.md §1.9) with the test's 15 mm/s mark
@@ -94,7 +108,30 @@ struct LoopbackBench {
   std::unique_ptr<LmcDevice> device;
 };
 
-inline bool laser_port_off(const BoardState& s) { return (s.port & 0x0001) == 0; }
+// A serpentine of n short marks (0.2 mm, rows of 100) after one jump: at 2000 mm/s each
+// takes 0.1 ms, so a packet of 256 lasts about 26 ms on the board.
+inline std::vector<DeviceCommand> zigzag(std::size_t n) {
+  std::vector<DeviceCommand> c{DeviceCommand::jump_to(-10, 0)};
+  for (std::size_t i = 1; i <= n; ++i) {
+    const std::size_t row = i / 100, col = i % 100;
+    const double x = -10 + 0.2 * double(row % 2 ? 100 - col : col);
+    c.push_back(DeviceCommand::mark_to(x, 0.1 * double(row) + ((i % 2) ? 0.05 : 0.0)));
+  }
+  return c;
+}
+
+inline DevicePen fast_pen() {
+  DevicePen p = golden_pen();
+  p.mark_speed_mm_s = 2000;
+  p.jump_speed_mm_s = 4000;
+  return p;
+}
+
+inline double figure(const DeviceReport& r, const std::string& key) {
+  for (const auto& [k, v] : r.figures)
+    if (k == key) return v;
+  return -1;
+}
 
 // Every single command the board received, in order.
 inline std::vector<Word> singles(const std::vector<WireRecord>& wire) {

@@ -63,9 +63,9 @@ CorrectionTable parse_cor(std::span<const std::uint8_t> b, const std::string& so
   }
   const std::size_t need = table + kCorEntries * pair_bytes;
   if (b.size() < need)
-    bad(source, "a " + std::string(t.format == CorrectionTable::Format::lmc1cor_float
-                                       ? "LMC1COR_1.0"
-                                       : "legacy (int32)") +
+ bad(source, std::string(t.format == CorrectionTable::Format::lmc1cor_float
+                                ? "an LMC1COR_1.0"
+                                : "a legacy (int32)") +
                     " correction file needs " + std::to_string(need) + " bytes, this one has " +
                     std::to_string(b.size()));
   t.scale = f64(b.data() + (table == kFloatTable ? kFloatScale : kIntScale));

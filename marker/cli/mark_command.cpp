@@ -1,6 +1,7 @@
-// `marker mark TEXT [layout options] [--device sim] [--head SL10|SL14|cheap]
-//  [--corner blanking|delays|none] [--speed MM_S] [--preview FILE.png] [--virtual-time] [--json]
-//  [--inject KIND@N] [--trace FILE.csv] [--require-quality high|good]`
+// `marker mark TEXT [layout options] [--device sim|lmc[:SERIAL]|lmc-capture:FILE]
+//  [--head SL10|SL14|cheap] [--corner blanking|delays|none] [--speed MM_S] [--power PCT]
+//  [--frequency KHZ] [--pulse-width NS] [--preview FILE.png] [--virtual-time] [--json]
+//  [--inject KIND@N] [--trace FILE.csv] [--require-quality high|good] [LMC options]`
 // The main job: real time by default (the drain paced at the tick, so the line memory is written
 // while it is read), quality figures against the laid-out text. Ctrl-C / SIGTERM put the laser
 // out within one drain block; the command then says where it stopped and exits 130.
@@ -23,6 +24,7 @@
 #include "marker/cli/inject_option.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
+#include "marker/cli/lmc_options.hpp"
 #include "marker/cli/output_file.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
@@ -48,6 +50,8 @@ struct MarkArgs {
   std::string trace;
   std::string inject;
   std::string require_quality;
+  LaserSettings laser;
+  LmcArgs lmc;
   bool virtual_time = false;
   bool json = false;
 };
@@ -73,6 +77,13 @@ JobSpec make_spec(const MarkArgs& a) {
   }
   if (a.run_in_mm) spec.pen.run_in_mm = *a.run_in_mm;
   if (a.run_out_mm) spec.pen.run_out_mm = *a.run_out_mm;
+  if (!(a.laser.power_pct >= 0 && a.laser.power_pct <= 100))
+    throw InputError("--power " + std::to_string(a.laser.power_pct) + " is outside 0 .. 100 %");
+  if (!(a.laser.frequency_khz > 0 && a.laser.frequency_khz <= 4000))
+    throw InputError("--frequency " + std::to_string(a.laser.frequency_khz) + " kHz is outside (0, 4000] kHz");
+  if (!(a.laser.pulse_width_ns >= 0 && a.laser.pulse_width_ns <= 65535))
+    throw InputError("--pulse-width " + std::to_string(a.laser.pulse_width_ns) + " ns is outside 0 .. 65535 ns");
+  spec.laser = a.laser;
   return spec;
 }
 
@@ -128,9 +139,9 @@ nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobResult& 
   return j;
 }
 
-void print_summary(const JobSpec& spec, const JobResult& r) {
+void print_summary(const JobSpec& spec, const JobResult& r, const std::string& device) {
   std::printf("marked %zu glyphs (%zu strokes, %zu commands) on %s, %s corners, %.0f mm/s\n",
-              r.glyphs, r.strokes, r.commands, spec.head.name.c_str(),
+              r.glyphs, r.strokes, r.commands, device.c_str(),
               std::string(to_string(spec.pen.corner)).c_str(), spec.pen.mark_speed_mm_s);
   std::printf("mark time %.4f s (device), %llu samples, compile %.1f µs, jumps %.1f mm, "
               "underruns %llu\n",
@@ -145,12 +156,18 @@ void print_summary(const JobSpec& spec, const JobResult& r) {
 }
 
 // Where a job that did not finish stopped, on one line (stderr).
-void print_stop(const JobResult& r, const JobSpec& spec, bool interrupted) {
+void print_stop(const JobResult& r, const JobSpec& spec, bool interrupted, DeviceLevel level) {
   const double t = static_cast<double>(r.stopped_at) * spec.pen.tick_s;
   std::string why = r.outcome == JobOutcome::aborted
                         ? (interrupted ? "interrupted" : "aborted")
                         : "failed (" + std::string(to_string(r.fault->category)) + ": " +
                               r.fault->message + ")";
+  if (level == DeviceLevel::commands) {
+    // A vector board: the stop point is a device command; its own clock is not the locus tick.
+    std::fprintf(stderr, "marker: mark %s at device command %llu: %.1f %% of the ink marked at most\n",
+                 why.c_str(), static_cast<unsigned long long>(r.stopped_at), 100 * r.ink_marked);
+    return;
+  }
   std::fprintf(stderr,
                "marker: mark %s at sample %llu (%.4f s device time): %.1f %% of the ink marked, "
                "laser off\n",
@@ -220,7 +237,7 @@ int run_mark(const MarkArgs& a) {
   SimSettings sim_settings;
   sim_settings.fault_at = inject.device_fault_at;
   sim_settings.trace = !a.trace.empty();
-  const std::unique_ptr<Device> device = open_device(a.device, spec, sim_settings);
+  const std::unique_ptr<Device> device = open_device(a.device, spec, sim_settings, a.lmc);
   auto* scanner = dynamic_cast<SimScanner*>(device.get());
   if (!scanner && (!a.preview.empty() || !a.dose_png.empty() || !a.trace.empty()))
     throw InputError("--preview, --dose-png and --trace need the simulated scanner (--device sim)");
@@ -250,11 +267,11 @@ int run_mark(const MarkArgs& a) {
   if (a.json) {
     std::cout << to_json(a, spec, r, device->describe().name).dump() << "\n";
   } else {
-    print_summary(spec, r);
+    print_summary(spec, r, device->describe().name);
     if (!a.preview.empty()) std::printf("wrote %s\n", a.preview.c_str());
   }
   if (r.outcome != JobOutcome::done) {
-    print_stop(r, spec, signal != 0);
+    print_stop(r, spec, signal != 0, device->describe().level);
     return r.outcome == JobOutcome::aborted ? kExitInterrupted : 1;
   }
   if (r.quality && classify(*r.quality) == QualityClass::poor)
@@ -274,7 +291,10 @@ Command make_mark_command() {
         auto* sub = app.add_subcommand("mark", "mark the text on a device (default: the simulated scanner)");
         sub->add_option("text", a->text, "text to mark (UTF-8; \\n starts a new line)")->required();
         add_layout_options(*sub, a->layout);
-        sub->add_option("--device", a->device, "device: sim (the simulated scanner)")->capture_default_str();
+        sub->add_option("--device", a->device,
+                        "device: sim (the simulated scanner), lmc or lmc:SERIAL (a BJJCZ board, see "
+                        "'marker devices'), lmc-capture:FILE (the board's bytes to a file)")
+            ->capture_default_str();
         sub->add_option("--head", a->head, "scan head preset: SL10, SL14, cheap")->capture_default_str();
         sub->add_option("--corner", a->corner, "corner strategy: blanking, delays, none")->capture_default_str();
         sub->add_option("--order", a->order, "stroke order: glyph, shortest (least jumping)")->capture_default_str();
@@ -297,6 +317,13 @@ Command make_mark_command() {
         sub->add_flag("--virtual-time", a->virtual_time,
                       "drain as fast as the device accepts (device time is still reported)");
         sub->add_flag("--json", a->json, "print one JSON object with the job's figures");
+        sub->add_option("--power", a->laser.power_pct, "laser power, % of the source")->capture_default_str();
+        sub->add_option("--frequency", a->laser.frequency_khz, "pulse repetition rate (Q-switch), kHz")
+            ->capture_default_str();
+        sub->add_option("--pulse-width", a->laser.pulse_width_ns,
+                        "MOPA pulse width, ns (0: the source's default; LMC --source mopa)")
+            ->capture_default_str();
+        add_lmc_options(*sub, a->lmc);
         return sub;
       },
       [a] { return run_mark(*a); });

@@ -34,4 +34,9 @@ InterruptScope::~InterruptScope() {
 
 int InterruptScope::signal() const { return g_signal; }
 
+StopFlag& interrupt_flag() {
+  static StopFlag flag;
+  return flag;
+}
+
 }  // namespace mark::cli

@@ -22,6 +22,10 @@ class InterruptScope {
   struct sigaction old_int_{}, old_term_{};
 };
 
+// The stop flag of the running command: cli::run() installs an InterruptScope on it around
+// every command, so Ctrl-C reaches whatever the command polls (a job's drain, a planner).
+StopFlag& interrupt_flag();
+
 // Exit status of a command stopped by a signal: 128 + SIGINT, as shells report it.
 inline constexpr int kExitInterrupted = 130;
 

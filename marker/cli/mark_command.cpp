@@ -242,19 +242,13 @@ int run_mark(const MarkArgs& a) {
   if (!scanner && (!a.preview.empty() || !a.dose_png.empty() || !a.trace.empty()))
     throw InputError("--preview, --dose-png and --trace need the simulated scanner (--device sim)");
 
-  StopFlag stop;
   JobOptions options;
   options.virtual_time = a.virtual_time;
-  options.stop = &stop;
+  options.stop = &interrupt_flag();
   options.inject = inject.drain;
   if (!a.json && isatty(STDERR_FILENO)) options.progress = progress_printer();
-  JobResult r;
-  int signal = 0;
-  {
-    InterruptScope interrupts(stop);
-    r = scanner ? run_job_simulated(spec, options, *scanner) : run_job(spec, options, *device);
-    signal = interrupts.signal();
-  }
+  const JobResult r =
+      scanner ? run_job_simulated(spec, options, *scanner) : run_job(spec, options, *device);
   if (scanner) {
     if (!a.preview.empty())
       write_file_whole(a.preview, [&](const std::string& tmp) {
@@ -271,7 +265,7 @@ int run_mark(const MarkArgs& a) {
     if (!a.preview.empty()) std::printf("wrote %s\n", a.preview.c_str());
   }
   if (r.outcome != JobOutcome::done) {
-    print_stop(r, spec, signal != 0, device->describe().level);
+    print_stop(r, spec, interrupt_flag().requested(), device->describe().level);
     return r.outcome == JobOutcome::aborted ? kExitInterrupted : 1;
   }
   if (r.quality && classify(*r.quality) == QualityClass::poor)

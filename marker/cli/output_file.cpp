@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "fonts/error.hpp"
+#include "marker/cli/interrupt.hpp"
 
 namespace mark::cli {
 namespace fs = std::filesystem;
@@ -34,6 +35,8 @@ void write_file_whole(const std::string& path,
       target.stem().string() + ".tmp-" + std::to_string(::getpid()) + target.extension().string();
   try {
     write(tmp);
+    // Ctrl-C while writing: the file is not finished, so it does not replace anything.
+    if (interrupt_flag().requested()) throw Interrupted();
   } catch (...) {
     std::error_code ec;
     fs::remove(tmp, ec);

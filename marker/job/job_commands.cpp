@@ -25,15 +25,16 @@ void run_commands(const JobSpec& spec, const JobOptions& options, CommandDevice&
 
   std::atomic<bool> finished{false};
   std::atomic<std::int64_t> aborted_at_ns{0};
+  const auto stop_board = [&] {
+    device.abort();
+    std::int64_t none = 0;
+    aborted_at_ns.compare_exchange_strong(none, StopFlag::now_ns(), std::memory_order_acq_rel);
+  };
   std::thread watcher;
   if (options.stop) {
     watcher = std::thread([&] {
       while (!finished.load(std::memory_order_acquire)) {
-        if (options.stop->requested()) {
-          device.abort();
-          aborted_at_ns.store(StopFlag::now_ns(), std::memory_order_release);
-          return;
-        }
+        if (options.stop->requested()) return stop_board();
         std::this_thread::sleep_for(std::chrono::microseconds(200));
       }
     });
@@ -45,9 +46,8 @@ void run_commands(const JobSpec& spec, const JobOptions& options, CommandDevice&
   constexpr std::size_t kChunk = 256;
   std::optional<DeviceFault> fault;
   for (std::size_t i = 0; i < all.size();) {
-    if (options.stop && options.stop->requested()) break;
-    if (i >= abort_at) {
-      device.abort();
+    if ((options.stop && options.stop->requested()) || i >= abort_at) {
+      stop_board();
       break;
     }
     const std::size_t n = std::min<std::size_t>({kChunk, all.size() - i, abort_at - i});

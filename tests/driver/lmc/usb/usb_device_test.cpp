@@ -198,3 +198,58 @@ TEST(LmcUsb, UnplugMidJobIsReportedWithin200ms) {
 
 }  // namespace
 }  // namespace mark::lmc
+
+// `marker devices` and `marker frame --device lmc` on the command line, against the same
+// emulated board (the CLI runs in-process, under the same umockdev preload).
+#include <nlohmann/json.hpp>
+
+#include "tests/marker/cli_runner.hpp"
+
+namespace mark::lmc {
+namespace {
+
+TEST(LmcUsbCli, DevicesListsTheBoards) {
+  test::Testbed tb;
+  BoardOptions a;
+  a.serial = 0x00C0FFEE;
+  EmulatedBoard board(a);
+  test::UmockdevBoard usb(tb.get(), board);
+  auto r = mark::test::run_cli({"devices", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["boards"].size(), 1u);
+  const auto& b = j["boards"][0];
+  EXPECT_EQ(b["bus"], 1);
+  EXPECT_EQ(b["address"], 2);
+  EXPECT_EQ(b["usb_id"], "9588:9899");
+  EXPECT_EQ(b["serial"], "00C0FFEE");
+  EXPECT_EQ(b["device"], "lmc:00C0FFEE");
+  EXPECT_EQ(b["usable"], true);
+  r = mark::test::run_cli({"devices"});
+  EXPECT_NE(r.out.find("bus 001 address 002"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("serial 00C0FFEE  (--device lmc:00C0FFEE)"), std::string::npos) << r.out;
+}
+
+TEST(LmcUsbCli, FrameTracesTheBoxWithTheRedPointer) {
+  test::Testbed tb;
+  EmulatedBoard board;
+  test::UmockdevBoard usb(tb.get(), board);
+  board.start_clock(4);
+  const auto r = mark::test::run_cli({"frame", "SN 42", "--height", "2", "--device", "lmc:4C4D4301",
+                                      "--laps", "2", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["laps"], 2);
+  const BoardState s = board.state();
+  EXPECT_EQ(s.executor.lit_ticks, 0u);
+  EXPECT_EQ(s.port, 0);
+  const auto path = board.red_path();
+  ASSERT_EQ(path.size(), 1 + 5 + 4u);
+  const double w = j["width"], h = j["height"];
+  EXPECT_NEAR(path[2].x - path[1].x, w, 0.004);
+  EXPECT_NEAR(path[3].y - path[2].y, h, 0.004);
+  board.stop_clock();
+}
+
+}  // namespace
+}  // namespace mark::lmc

@@ -61,30 +61,18 @@ std::string_view command_name(std::uint16_t opcode) {
 // Field units
 
 FieldUnits::FieldUnits(double field_mm, AxisMap axes, PolygonDelayUnit polygon)
-    : field_mm_(field_mm), per_mm_(65535.0 / field_mm), axes_(axes), polygon_(polygon) {
+    : field_mm_(field_mm),
+      per_mm_(65535.0 / field_mm),
+      edge_(field_mm / 2 * (1 + 1e-12)),
+      axes_(axes),
+      polygon_(polygon) {
   if (!(field_mm > 0) || !std::isfinite(field_mm) || field_mm > 10000)
     throw EncodeError(fmt("lmc: lens field %g mm is not a size (allowed 0 < field ≤ 10000 mm)",
                           field_mm));
 }
 
-bool FieldUnits::in_field(double x_mm, double y_mm) const {
-  const double h = half_field_mm() * (1 + 1e-12);
-  return std::isfinite(x_mm) && std::isfinite(y_mm) && std::abs(x_mm) <= h && std::abs(y_mm) <= h;
-}
-
-std::array<std::uint16_t, 2> FieldUnits::point(double x_mm, double y_mm) const {
-  if (!in_field(x_mm, y_mm))
-    refuse("point", fmt("(%.4f, %.4f) mm lies outside the %g mm field", x_mm, y_mm, field_mm_));
-  double a = axes_.flip_x ? -x_mm : x_mm;
-  double b = axes_.flip_y ? -y_mm : y_mm;
-  if (axes_.swap_xy) std::swap(a, b);
-  // Truncation, as the reference drivers (see the header); the clamp only absorbs the 1e-12
-  // tolerance of in_field at the field's edge.
-  const auto unit = [&](double v) {
-    const double u = std::floor(32768.0 + v * per_mm_);
-    return static_cast<std::uint16_t>(std::clamp(u, 0.0, 65535.0));
-  };
-  return {unit(a), unit(b)};
+void FieldUnits::refuse_point(double x_mm, double y_mm) const {
+  refuse("point", fmt("(%.4f, %.4f) mm lies outside the %g mm field", x_mm, y_mm, field_mm_));
 }
 
 std::array<double, 2> FieldUnits::field_point(std::uint16_t p1, std::uint16_t p2) const {
@@ -99,18 +87,13 @@ std::array<double, 2> FieldUnits::field_point(std::uint16_t p1, std::uint16_t p2
 // --------------------------------------------------------------------------------------------
 // Unit encoders
 
-std::uint16_t encode_speed(double mm_s, const FieldUnits& u, std::string_view what) {
-  const double units_per_ms = mm_s * u.units_per_mm() / 1000.0;
+void refuse_speed(double mm_s, const FieldUnits& u, std::string_view what) {
   const double lo = 1000.0 / u.units_per_mm(), hi = 65535.0 * 1000.0 / u.units_per_mm();
-  if (!std::isfinite(mm_s) || units_per_ms < 1.0 || units_per_ms >= 65536.0) {
-    char buf[200];
-    std::snprintf(buf, sizeof buf,
-                  "%g mm/s is outside what the board runs on a %g mm lens (allowed %.3f .. %.0f "
-                  "mm/s)",
-                  mm_s, u.field_mm(), lo, hi);
-    refuse(what, buf);
-  }
-  return static_cast<std::uint16_t>(units_per_ms);  // truncated, as meerk40t
+  char buf[200];
+  std::snprintf(buf, sizeof buf,
+                "%g mm/s is outside what the board runs on a %g mm lens (allowed %.3f .. %.0f mm/s)",
+                mm_s, u.field_mm(), lo, hi);
+  refuse(what, buf);
 }
 
 std::array<std::uint16_t, 2> encode_signed_us(double seconds, std::string_view what) {
@@ -278,13 +261,11 @@ std::array<std::uint8_t, kCommandBytes> bytes(const Word& c) {
 }
 
 void ListPacket::clear() {
-  static const std::array<std::uint8_t, kPacketBytes> padding = [] {
-    std::array<std::uint8_t, kPacketBytes> p{};
-    for (std::size_t i = 0; i < kCommandsPerPacket; ++i)
-      store(word(Op::EndOfList), p.data() + i * kCommandBytes);
-    return p;
-  }();
-  bytes_ = padding;
+  for (std::size_t i = 0; i < kCommandsPerPacket; ++i) {
+    std::uint16_t* w = words_.data() + 6 * i;
+    w[0] = wire(static_cast<std::uint16_t>(Op::EndOfList));
+    w[1] = w[2] = w[3] = w[4] = w[5] = 0;
+  }
   used_ = 0;
 }
 

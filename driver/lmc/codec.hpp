@@ -18,7 +18,9 @@
 // rectangle); the cost is at most one field unit (1.7 µm on a 110 mm lens) of offset. Times,
 // power and periods are rounded to nearest, as they do too.
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstring>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -260,22 +262,49 @@ class FieldUnits {
   PolygonDelayUnit polygon_unit() const { return polygon_; }
 
   // Field point (mm) → board words (p1, p2). Callers check the field first: a point outside
-  // |x|, |y| ≤ field/2 throws EncodeError here as a last line of defence.
-  std::array<std::uint16_t, 2> point(double x_mm, double y_mm) const;
+  // |x|, |y| ≤ field/2 throws EncodeError here as a last line of defence. Inline: the list
+  // encoder calls it for every move.
+  std::array<std::uint16_t, 2> point(double x_mm, double y_mm) const {
+    if (!in_field(x_mm, y_mm)) refuse_point(x_mm, y_mm);
+    double a = axes_.flip_x ? -x_mm : x_mm;
+    double b = axes_.flip_y ? -y_mm : y_mm;
+    if (axes_.swap_xy) std::swap(a, b);
+    return {unit(a), unit(b)};
+  }
   // Board words → field point (mm), the inverse up to the truncation.
   std::array<double, 2> field_point(std::uint16_t p1, std::uint16_t p2) const;
-  bool in_field(double x_mm, double y_mm) const;
+  bool in_field(double x_mm, double y_mm) const {
+    // |x| ≤ h, written so that a NaN fails too.
+    return std::abs(x_mm) <= edge_ && std::abs(y_mm) <= edge_;
+  }
+  double speed_factor() const { return per_mm_ / 1000.0; }  // mm/s → units per ms
 
  private:
+  // Truncation, as the reference drivers (see the top of this file). In the field u ≥ 0.4999
+  // (−half field maps to 0.5), so truncating is flooring; the min only absorbs in_field's 1e-12
+  // tolerance at the +edge.
+  std::uint16_t unit(double v) const {
+    const double u = 32768.0 + v * per_mm_;
+    return static_cast<std::uint16_t>(u < 65535.0 ? u : 65535.0);
+  }
+  [[noreturn]] void refuse_point(double x_mm, double y_mm) const;
+
   double field_mm_;
   double per_mm_;
+  double edge_;  // half the field, with a 1e-12 relative tolerance
   AxisMap axes_;
   PolygonDelayUnit polygon_;
 };
 
 // The encoders, one per unit (the table's parameters name which). Each throws EncodeError
 // naming `what` when the value does not fit.
-std::uint16_t encode_speed(double mm_s, const FieldUnits& u, std::string_view what = "speed");
+[[noreturn]] void refuse_speed(double mm_s, const FieldUnits& u, std::string_view what);
+inline std::uint16_t encode_speed(double mm_s, const FieldUnits& u, std::string_view what = "speed") {
+  const double units_per_ms = mm_s * u.speed_factor();
+  // Written so that a NaN fails too.
+  if (!(units_per_ms >= 1.0 && units_per_ms < 65536.0)) refuse_speed(mm_s, u, what);
+  return static_cast<std::uint16_t>(units_per_ms);  // truncated, as meerk40t
+}
 std::array<std::uint16_t, 2> encode_signed_us(double seconds, std::string_view what = "delay");
 std::uint16_t encode_time_10us(double seconds, std::uint32_t max = 0xFFFF,
                                std::string_view what = "time");
@@ -288,10 +317,13 @@ std::uint16_t encode_pulse_width_ns(double ns);
 std::uint16_t encode_cor_delta(std::int64_t delta);
 std::int32_t decode_cor_delta(std::uint16_t word);
 // Segment length in field units between two encoded points: truncated, clamped to 0xFFFF.
+inline double segment_length(std::array<std::uint16_t, 2> a, std::array<std::uint16_t, 2> b) {
+  const std::int64_t dx = std::int64_t(a[0]) - b[0], dy = std::int64_t(a[1]) - b[1];
+  return std::sqrt(double(dx * dx + dy * dy));  // exact below 2^53: one rounding, in the sqrt
+}
 inline std::uint16_t segment_distance(std::array<std::uint16_t, 2> a,
                                       std::array<std::uint16_t, 2> b) {
-  const double dx = double(a[0]) - double(b[0]), dy = double(a[1]) - double(b[1]);
-  const double d = std::sqrt(dx * dx + dy * dy);
+  const double d = segment_length(a, b);
   return d >= 65535.0 ? std::uint16_t(0xFFFF) : static_cast<std::uint16_t>(d);
 }
 // The decoders: speed word → mm/s, signed µs pair → s, 10 µs word → s, period → kHz, 12-bit → %.
@@ -320,6 +352,10 @@ constexpr Word word(Op op, std::uint16_t p1 = 0, std::uint16_t p2 = 0, std::uint
 }
 
 inline void store(const Word& c, std::uint8_t* out) {
+  if constexpr (std::endian::native == std::endian::little) {
+    std::memcpy(out, c.w.data(), kCommandBytes);  // the wire is little-endian too
+    return;
+  }
   for (int i = 0; i < 6; ++i) {
     out[2 * i] = static_cast<std::uint8_t>(c.w[std::size_t(i)] & 0xFF);
     out[2 * i + 1] = static_cast<std::uint8_t>(c.w[std::size_t(i)] >> 8);
@@ -327,6 +363,10 @@ inline void store(const Word& c, std::uint8_t* out) {
 }
 inline Word load(const std::uint8_t* in) {
   Word c;
+  if constexpr (std::endian::native == std::endian::little) {
+    std::memcpy(c.w.data(), in, kCommandBytes);
+    return c;
+  }
   for (int i = 0; i < 6; ++i)
     c.w[std::size_t(i)] = static_cast<std::uint16_t>(in[2 * i] | (in[2 * i + 1] << 8));
   return c;
@@ -342,7 +382,10 @@ Word encode(Op op, std::initializer_list<double> values, const FieldUnits& u);
 // The inverse: each parameter of the table decoded to its physical value (same units).
 std::array<double, 5> decode_params(const Word& c, const CommandSpec& spec, const FieldUnits& u);
 
-// One list packet being filled: 256 slots, unused ones EndOfList.
+// One list packet being filled: 256 slots, unused ones EndOfList. Held as 16-bit words in wire
+// (little-endian) order: stores into it then cannot alias the encoder's own state the way byte
+// stores would (a char store may alias anything, so the compiler would reload every member
+// after each one); bytes() views the same memory as the 3072 bytes that go on the wire.
 class ListPacket {
  public:
   ListPacket() { clear(); }
@@ -350,13 +393,26 @@ class ListPacket {
   bool full() const { return used_ == kCommandsPerPacket; }
   bool empty() const { return used_ == 0; }
   std::size_t used() const { return used_; }
-  void push(const Word& c) { store(c, bytes_.data() + kCommandBytes * used_++); }
-  std::span<const std::uint8_t, kPacketBytes> bytes() const { return bytes_; }
+  void push(const Word& c) { push(c.w[0], c.w[1], c.w[2], c.w[3], c.w[4], c.w[5]); }
+  void push(std::uint16_t op, std::uint16_t p1, std::uint16_t p2 = 0, std::uint16_t p3 = 0,
+            std::uint16_t p4 = 0, std::uint16_t p5 = 0) {
+    std::uint16_t* w = words_.data() + 6 * used_++;
+    w[0] = wire(op), w[1] = wire(p1), w[2] = wire(p2), w[3] = wire(p3), w[4] = wire(p4), w[5] = wire(p5);
+  }
+  std::span<const std::uint8_t, kPacketBytes> bytes() const {
+    return std::span<const std::uint8_t, kPacketBytes>(
+        reinterpret_cast<const std::uint8_t*>(words_.data()), kPacketBytes);
+  }
 
  private:
-  std::array<std::uint8_t, kPacketBytes> bytes_;
+  static constexpr std::uint16_t wire(std::uint16_t v) {
+    if constexpr (std::endian::native == std::endian::little) return v;
+    return static_cast<std::uint16_t>(v << 8 | v >> 8);
+  }
+  std::array<std::uint16_t, kPacketBytes / 2> words_;
   std::size_t used_ = 0;
 };
+static_assert(sizeof(std::array<std::uint16_t, kPacketBytes / 2>) == kPacketBytes);
 
 // A human-readable line for one command word: "MarkTo x=12.500 mm y=-3.000 mm angle=0
 // distance=5958" — the capture dump and test failure messages use it.

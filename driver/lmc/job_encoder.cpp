@@ -59,18 +59,12 @@ BoardPen encode_pen(const DevicePen& p, std::size_t i, const FieldUnits& u, Lase
 JobEncoder::JobEncoder(const FieldUnits& units, PacketSink sink)
     : units_(units), sink_(std::move(sink)) {}
 
-void JobEncoder::push(const Word& c, double estimated_s) {
-  if (packet_.full()) {
-    // Commands before the one being encoded are complete; its own words may straddle.
-    sink_(packet_, PacketInfo{current_, packet_estimate_s_, false});
-    ++figures_.packets;
-    packet_.clear();
-    packet_estimate_s_ = 0;
-  }
-  packet_.push(c);
-  packet_estimate_s_ += estimated_s;
-  figures_.estimated_s += estimated_s;
-  ++figures_.list_commands;
+void JobEncoder::flush_full() {
+  // Commands before the one being encoded are complete; its own words may straddle.
+  sink_(packet_, PacketInfo{current_, packet_estimate_s_, false});
+  ++figures_.packets;
+  packet_.clear();
+  packet_estimate_s_ = 0;
 }
 
 void JobEncoder::start_list(double open_mo_delay_s, std::uint16_t port_bits) {
@@ -78,7 +72,8 @@ void JobEncoder::start_list(double open_mo_delay_s, std::uint16_t port_bits) {
   // board as part of the next list.
   packet_.clear();
   packet_estimate_s_ = 0;
-  jump_speed_.reset(), mark_speed_.reset(), qswitch_.reset(), power_.reset();
+  jump_speed_ = mark_speed_ = kUnknown;
+  qswitch_.reset(), power_.reset();
   pulse_width_.reset(), on_delay_.reset(), off_delay_.reset(), polygon_.reset();
   in_run_ = false;
   pen_ = nullptr;
@@ -90,8 +85,7 @@ void JobEncoder::start_list(double open_mo_delay_s, std::uint16_t port_bits) {
   push(word(Op::ListWritePort, port_bits));
 }
 
-void JobEncoder::set_jump_speed(std::uint16_t w) {
-  if (jump_speed_ == w) return;
+void JobEncoder::send_jump_speed(std::uint16_t w) {
   push(word(Op::JumpSpeed, w));
   ++figures_.parameter_commands;
   jump_speed_ = w;
@@ -100,11 +94,11 @@ void JobEncoder::set_jump_speed(std::uint16_t w) {
 // The board keeps its jump delay across lists, and nothing documents its power-on value. Like
 // meerk40t (whose golden job sends no JumpDelay) this takes it as 0 on a fresh connection and
 // then tracks every value sent, so a pen with jump delay 0 after one with 200 µs does send 0.
-void JobEncoder::set_jump_delay(std::array<std::uint16_t, 2> d) {
-  if (jump_delay_ == d) return;
+void JobEncoder::send_jump_delay(std::array<std::uint16_t, 2> d) {
   push(word(Op::JumpDelay, d[0], d[1]));
   ++figures_.parameter_commands;
   jump_delay_ = d;
+  jump_delay_s_ = std::max(0.0, signed_s(d));
 }
 
 void JobEncoder::apply_pen(const BoardPen& p) {
@@ -119,7 +113,11 @@ void JobEncoder::apply_pen(const BoardPen& p) {
   if (p.pulse_width) param(pulse_width_, *p.pulse_width, word(Op::FiberYLPMPulseWidth, *p.pulse_width));
   param(qswitch_, p.qswitch_period, word(Op::QSwitchPeriod, p.qswitch_period));
   param(power_, p.power, word(Op::MarkCurrent, p.power));
-  param(mark_speed_, p.mark_speed, word(Op::MarkSpeed, p.mark_speed));
+  if (mark_speed_ != p.mark_speed) {
+    push(word(Op::MarkSpeed, p.mark_speed));
+    ++figures_.parameter_commands;
+    mark_speed_ = p.mark_speed;
+  }
   param(on_delay_, p.laser_on_delay, word(Op::LaserOnDelay, p.laser_on_delay[0], p.laser_on_delay[1]));
   param(off_delay_, p.laser_off_delay, word(Op::LaserOffDelay, p.laser_off_delay[0], p.laser_off_delay[1]));
   param(polygon_, p.polygon_delay, word(Op::PolygonDelay, p.polygon_delay[0], p.polygon_delay[1]));
@@ -128,11 +126,17 @@ void JobEncoder::apply_pen(const BoardPen& p) {
 
 void JobEncoder::move(Op op, double x_mm, double y_mm, std::uint16_t speed_word) {
   const auto to = units_.point(x_mm, y_mm);
-  if (to == at_) return;  // nowhere to go (meerk40t drops these too)
-  const std::uint16_t d = segment_distance(at_, to);
-  double t = double(d) / (double(speed_word) * 1000.0);
-  if (op == Op::JumpTo) t += std::max(0.0, signed_s(jump_delay_));
-  push(word(op, to[0], to[1], 0, d), t);
+  if (to[0] == at_[0] && to[1] == at_[1]) return;  // nowhere to go (meerk40t drops these too)
+  const double length = segment_length(at_, to);
+  const std::uint16_t d = length >= 65535.0 ? std::uint16_t(0xFFFF) : static_cast<std::uint16_t>(length);
+  // The estimate: length / speed (units per ms); the reciprocal is cached per speed word.
+  if (speed_word != inverse_for_) {
+    inverse_for_ = speed_word;
+    inverse_speed_ = 1.0 / (double(speed_word) * 1000.0);
+  }
+  double t = length * inverse_speed_;
+  if (op == Op::JumpTo) t += jump_delay_s_;
+  push_move(op, to, d, t);
   ++figures_.moves;
   at_ = to;
 }

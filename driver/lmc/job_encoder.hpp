@@ -93,9 +93,30 @@ class JobEncoder {
   bool in_mark_run() const { return in_run_; }
 
  private:
-  void push(const Word& c, double estimated_s = 0);
-  void set_jump_speed(std::uint16_t w);
-  void set_jump_delay(std::array<std::uint16_t, 2> d);
+  void push(const Word& c, double estimated_s = 0) {
+    if (packet_.full()) flush_full();
+    packet_.push(c);
+    packet_estimate_s_ += estimated_s;
+    figures_.estimated_s += estimated_s;
+    ++figures_.list_commands;
+  }
+  // A move, straight into the packet (the hot path).
+  void push_move(Op op, std::array<std::uint16_t, 2> to, std::uint16_t distance, double estimated_s) {
+    if (packet_.full()) flush_full();
+    packet_.push(static_cast<std::uint16_t>(op), to[0], to[1], 0, distance);
+    packet_estimate_s_ += estimated_s;
+    figures_.estimated_s += estimated_s;
+    ++figures_.list_commands;
+  }
+  void flush_full();
+  void set_jump_speed(std::uint16_t w) {
+    if (jump_speed_ != w) send_jump_speed(w);
+  }
+  void set_jump_delay(std::array<std::uint16_t, 2> d) {
+    if (jump_delay_[0] != d[0] || jump_delay_[1] != d[1]) send_jump_delay(d);
+  }
+  void send_jump_speed(std::uint16_t w);
+  void send_jump_delay(std::array<std::uint16_t, 2> d);
   void move(Op op, double x_mm, double y_mm, std::uint16_t speed_word);
   void end_run();
 
@@ -109,9 +130,15 @@ class JobEncoder {
   std::array<std::uint16_t, 2> at_{0x8000, 0x8000};
   bool in_run_ = false;
   // What the board has now (nullopt: unknown, send it).
-  std::optional<std::uint16_t> jump_speed_, mark_speed_, qswitch_, power_, pulse_width_;
+  // The speed words the board has; kUnknown after a new list (sent again).
+  static constexpr std::uint32_t kUnknown = 0x10000;
+  std::uint32_t jump_speed_ = kUnknown, mark_speed_ = kUnknown;
+  std::optional<std::uint16_t> qswitch_, power_, pulse_width_;
   std::optional<std::array<std::uint16_t, 2>> on_delay_, off_delay_, polygon_;
   std::array<std::uint16_t, 2> jump_delay_{0, 0};
+  double jump_delay_s_ = 0;            // the jump delay's share of the estimate
+  std::uint32_t inverse_for_ = 0;      // speed word the cached reciprocal belongs to
+  double inverse_speed_ = 0;
 };
 
 }  // namespace mark::lmc

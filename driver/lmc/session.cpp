@@ -126,36 +126,49 @@ void Session::write_packet(const ListPacket& packet, bool stopping) {
   transact(word(Op::SetEndOfList, 0), stopping);
 }
 
-void Session::send_packet(const ListPacket& packet, double estimated_s) {
-  // Wait for READY. The board frees a slot as it executes; it can never take longer than the
-  // work queued on it, so the deadline is that estimate plus the grace period.
+// Polls the status until `done` holds for it. The board can never take longer than the work
+// queued on it, so the deadline is what is left of that estimate since ExecuteList (time
+// paused not counted) plus the grace period. Returns the seconds waited, 0 if the first poll
+// was enough; throws BoardTimeout saying what it waited for.
+template <class Done>
+double Session::poll_until(Done done, const std::string& waiting_for) {
   const auto t0 = Clock::now();
-  double pause_credit = 0;
-  bool waited = false;
-  for (;;) {
-    const bool was_paused = paused_.load();
-    const auto poll_t = Clock::now();
-    if (poll_locked() & status::ready) break;
-    waited = true;
-    if (was_paused || paused_.load()) pause_credit += seconds_since(poll_t);
+  auto last = t0;
+  double paused_here = 0;
+  for (bool first = true;; first = false) {
+    if (done(poll_locked())) {
+      paused_s_ += paused_here;
+      return first ? 0 : seconds_since(t0);
+    }
+    const auto now = Clock::now();
+    if (paused_.load()) paused_here += std::chrono::duration<double>(now - last).count();
+    last = now;
     double remaining = queued_s_;
-    if (executed_) remaining -= seconds_since(execute_start_) - paused_s_ - pause_credit;
-    const double allowed = std::max(0.0, remaining) + options_.grace_s + pause_credit;
-    if (seconds_since(t0) > allowed) {
+    if (executed_)
+      remaining -= std::chrono::duration<double>(now - execute_start_).count() - paused_s_ - paused_here;
+    remaining = std::max(0.0, remaining);
+    const double waited = std::chrono::duration<double>(now - t0).count();
+    if (waited - paused_here > remaining + options_.grace_s) {
       char buf[240];
       std::snprintf(buf, sizeof buf,
-                    "lmc: the board did not become READY for list packet %zu within %.2f s (its "
-                    "queued work was estimated at %.2f s)",
-                    packets_in_list_ + 1, seconds_since(t0), std::max(0.0, remaining));
+                    "lmc: the board did not %s within %.2f s (its queued work was estimated at "
+                    "%.2f s)",
+                    waiting_for.c_str(), waited, remaining);
       throw BoardTimeout(buf);
     }
     sleep_poll();
   }
-  if (waited) {
+}
+
+void Session::send_packet(const ListPacket& packet, double estimated_s) {
+  const double waited = poll_until([](std::uint16_t s) { return (s & status::ready) != 0; },
+                                   "become READY for list packet " +
+                                       std::to_string(packets_in_list_ + 1));
+  if (waited > 0) {
+    std::lock_guard lock(wire_);
     ++figures_.ready_waits;
-    figures_.ready_wait_s += seconds_since(t0);
+    figures_.ready_wait_s += waited;
   }
-  paused_s_ += pause_credit;
   write_packet(packet, false);
   ++packets_in_list_;
   queued_s_ += estimated_s;
@@ -171,26 +184,7 @@ void Session::finish_list() {
 }
 
 void Session::wait_idle() {
-  const auto t0 = Clock::now();
-  double pause_credit = 0;
-  for (;;) {
-    const bool was_paused = paused_.load();
-    const auto poll_t = Clock::now();
-    if (!(poll_locked() & status::busy)) return;
-    if (was_paused || paused_.load()) pause_credit += seconds_since(poll_t);
-    const double remaining =
-        queued_s_ - (seconds_since(execute_start_) - paused_s_ - pause_credit);
-    const double allowed = std::max(0.0, remaining) + options_.grace_s + pause_credit;
-    if (seconds_since(t0) > allowed) {
-      char buf[200];
-      std::snprintf(buf, sizeof buf,
-                    "lmc: the board was still BUSY %.2f s after the end of the list was due "
-                    "(estimated %.2f s of work)",
-                    seconds_since(t0) - std::max(0.0, remaining), queued_s_);
-      throw BoardTimeout(buf);
-    }
-    sleep_poll();
-  }
+  poll_until([](std::uint16_t s) { return (s & status::busy) == 0; }, "finish its list (still BUSY)");
 }
 
 SessionFigures Session::figures() {

@@ -126,6 +126,8 @@ class Session {
   void write_packet(const ListPacket& packet, bool stopping);
   void check_abort(bool stopping) const;
   std::uint16_t poll_locked();
+  template <class Done>
+  double poll_until(Done done, const std::string& waiting_for);
   void sleep_poll() const;
 
   LmcLink& link_;

@@ -3,22 +3,14 @@
 // trust — exactly 65 × 65 deltas that are valid sign-magnitude words (|d| ≤ 32767, re-encoding
 // to the same word), a finite-or-reported scale; capture records that account for every byte.
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <span>
 
 #include "driver/lmc/capture_link.hpp"
 #include "driver/lmc/codec.hpp"
 #include "driver/lmc/cor_file.hpp"
+#include "fuzz_check.hpp"
 
-namespace {
-
-[[noreturn]] void broken(const char* what) {
-  std::fprintf(stderr, "fuzz invariant broken: %s\n", what);
-  std::abort();
-}
-
-}  // namespace
+using mark::fuzz::broken;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace mark::lmc;

@@ -3,21 +3,13 @@
 // bytes; its serial string parses back to its data words; and any 12 bytes decode to a command
 // word that describe() can name, known opcode or not, with every axis map and polygon unit.
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <span>
 
 #include "driver/lmc/codec.hpp"
+#include "fuzz_check.hpp"
 
-namespace {
-
-[[noreturn]] void broken(const char* what) {
-  std::fprintf(stderr, "fuzz invariant broken: %s\n", what);
-  std::abort();
-}
-
-}  // namespace
+using mark::fuzz::broken;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace mark::lmc;

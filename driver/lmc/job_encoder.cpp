@@ -59,12 +59,18 @@ BoardPen encode_pen(const DevicePen& p, std::size_t i, const FieldUnits& u, Lase
 JobEncoder::JobEncoder(const FieldUnits& units, PacketSink sink)
     : units_(units), sink_(std::move(sink)) {}
 
-void JobEncoder::flush_full() {
-  // Commands before the one being encoded are complete; its own words may straddle.
-  sink_(packet_, PacketInfo{current_, packet_estimate_s_, false});
+void JobEncoder::emit_packet(const PacketInfo& info) {
+  sink_(packet_, info);
   ++figures_.packets;
+  figures_.list_commands += packet_.used();
+  figures_.estimated_s += packet_estimate_s_;
   packet_.clear();
   packet_estimate_s_ = 0;
+}
+
+void JobEncoder::flush_full() {
+  // Commands before the one being encoded are complete; its own words may straddle.
+  emit_packet(PacketInfo{current_, packet_estimate_s_, false});
 }
 
 void JobEncoder::start_list(double open_mo_delay_s, std::uint16_t port_bits) {
@@ -204,10 +210,7 @@ void JobEncoder::finish(std::uint64_t commands_in_job) {
   current_ = commands_in_job;
   end_run();
   push(word(Op::EndOfList));
-  sink_(packet_, PacketInfo{commands_in_job, packet_estimate_s_, true});
-  ++figures_.packets;
-  packet_.clear();
-  packet_estimate_s_ = 0;
+  emit_packet(PacketInfo{commands_in_job, packet_estimate_s_, true});
 }
 
 }  // namespace mark::lmc

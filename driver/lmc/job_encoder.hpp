@@ -63,8 +63,9 @@ struct PacketInfo {
 };
 using PacketSink = std::function<void(const ListPacket&, const PacketInfo&)>;
 
+// Counted as packets leave (a packet the sink refused, or one dropped by start_list, is not).
 struct EncoderFigures {
-  std::uint64_t list_commands = 0;  // list command words written (padding not counted)
+  std::uint64_t list_commands = 0;  // list command words handed on (padding not counted)
   std::uint64_t packets = 0;
   std::uint64_t moves = 0;          // JumpTo + MarkTo
   std::uint64_t parameter_commands = 0;  // speeds, delays, laser settings
@@ -97,17 +98,15 @@ class JobEncoder {
     if (packet_.full()) flush_full();
     packet_.push(c);
     packet_estimate_s_ += estimated_s;
-    figures_.estimated_s += estimated_s;
-    ++figures_.list_commands;
   }
   // A move, straight into the packet (the hot path).
   void push_move(Op op, std::array<std::uint16_t, 2> to, std::uint16_t distance, double estimated_s) {
     if (packet_.full()) flush_full();
     packet_.push(static_cast<std::uint16_t>(op), to[0], to[1], 0, distance);
     packet_estimate_s_ += estimated_s;
-    figures_.estimated_s += estimated_s;
-    ++figures_.list_commands;
   }
+  // Hands the packet to the sink and counts it once the sink took it.
+  void emit_packet(const PacketInfo& info);
   void flush_full();
   void set_jump_speed(std::uint16_t w) {
     if (jump_speed_ != w) send_jump_speed(w);

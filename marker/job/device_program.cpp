@@ -27,11 +27,11 @@ std::size_t chord_count(const Element& e, double tol_mm) {
 // The points at parameters k/n (k = 1 … n) of an arc or ellipse arc, for chords: the angle
 // advances by a fixed rotation instead of a sin/cos per point (two-thirds of the conversion's
 // time went to sincos), and the last point is the element's exact end. The recurrence drifts by
-// about k·1e-16 of the radius: far below the chord tolerance for any n a glyph needs.
+// about k·1e-16 of the radius: far below the chord tolerance for any n a glyph needs. `start`
+// is the element's start point (the caller has it; a circle's first direction comes from it).
 template <class F>
-void for_chord_points(const Element& e, std::size_t n, F&& emit) {
-  const auto rotate_from = [&](double start, double step, auto&& place) {
-    double c = std::cos(start), s = std::sin(start);
+void for_chord_points(const Element& e, const Point& start, std::size_t n, F&& emit) {
+  const auto rotate_from = [&](double c, double s, double step, auto&& place) {
     const double dc = std::cos(step), ds = std::sin(step);
     for (std::size_t k = 1; k < n; ++k) {
       const double c1 = c * dc - s * ds;
@@ -43,13 +43,15 @@ void for_chord_points(const Element& e, std::size_t n, F&& emit) {
   };
   std::visit(Overloaded{[&](const Line&) { emit(e.end()); },
                         [&](const CircularArc& a) {
-                          rotate_from(a.start_angle, a.sweep / double(n), [&](double c, double s) {
+                          const Point u = (start - a.center) / a.radius;
+                          rotate_from(u.x(), u.y(), a.sweep / double(n), [&](double c, double s) {
                             return Point(a.center + a.radius * Point(c, s));
                           });
                         },
                         [&](const EllipticalArc& el) {
                           const double rc = std::cos(el.rotation), rs = std::sin(el.rotation);
-                          rotate_from(el.start_param, el.sweep / double(n), [&](double c, double s) {
+                          rotate_from(std::cos(el.start_param), std::sin(el.start_param),
+                                      el.sweep / double(n), [&](double c, double s) {
                             const double x = el.rx * c, y = el.ry * s;
                             return Point(el.center + Point(rc * x - rs * y, rs * x + rc * y));
                           });
@@ -79,7 +81,7 @@ class Builder {
     }
     const std::size_t n = chord_count(e, device_.chord_tolerance_mm);
     Point prev = e.start();
-    for_chord_points(e, n, [&](const Point& p) {
+    for_chord_points(e, prev, n, [&](const Point& p) {
       push(DeviceCommand::mark_to(p.x(), p.y(), speed), true, (p - prev).norm());
       prev = p;
     });
@@ -89,7 +91,7 @@ class Builder {
   void laser_off_line(const Element& e, double speed) {
     // Blanking lines are straight; anything else unlit is flattened like a lit curve.
     const std::size_t n = e.kind() == ElementKind::line ? 1 : chord_count(e, device_.chord_tolerance_mm);
-    for_chord_points(e, n, [&](const Point& p) { jump(p, speed); });
+    for_chord_points(e, e.start(), n, [&](const Point& p) { jump(p, speed); });
   }
 
   void dwell(double seconds, bool laser) { push(DeviceCommand::dwell_for(seconds, laser), false, 0); }

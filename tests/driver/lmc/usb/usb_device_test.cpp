@@ -233,6 +233,38 @@ TEST(LmcUsbCli, DevicesListsTheBoards) {
   EXPECT_NE(r.out.find("serial 00C0FFEE  (--device lmc:00C0FFEE)"), std::string::npos) << r.out;
 }
 
+TEST(LmcUsbCli, MarkOnTheBoard) {
+  test::Testbed tb;
+  EmulatedBoard board;
+  test::UmockdevBoard usb(tb.get(), board);
+  board.start_clock();
+  const auto r = mark::test::run_cli({"mark", "SN 42", "--height", "2", "--device", "lmc",
+                                      "--power", "60", "--frequency", "25", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["outcome"], "done");
+  EXPECT_EQ(j["device"], "lmc 4C4D4301");
+  const auto& f = j["device_figures"];
+  EXPECT_EQ(f["packets"], 1);
+  EXPECT_GT(f["commands"].get<double>(), 20);
+  // The pen's laser settings went to the board: 60 % of 4095, 20000 / 25 kHz.
+  bool power = false, period = false;
+  const auto packets = board.packets();
+  ASSERT_EQ(packets.size(), 1u);
+  for (const Word& w : packets[0]) {
+    power |= w == word(Op::MarkCurrent, 2457);
+    period |= w == word(Op::QSwitchPeriod, 800);
+  }
+  EXPECT_TRUE(power);
+  EXPECT_TRUE(period);
+  const BoardState s = board.state();
+  EXPECT_TRUE(s.finished);
+  EXPECT_GT(s.executor.lit_ticks, 0u);
+  EXPECT_EQ(s.port, 0);
+  EXPECT_TRUE(board.violations().empty());
+  board.stop_clock();
+}
+
 TEST(LmcUsbCli, FrameTracesTheBoxWithTheRedPointer) {
   test::Testbed tb;
   EmulatedBoard board;

@@ -417,6 +417,8 @@ Vec2 LmcDevice::query_position() {
   return {p[0], p[1]};
 }
 
+std::uint16_t LmcDevice::query_status() { return session_.poll_status(); }
+
 void LmcDevice::set_red_pointer(bool on) {
   std::lock_guard job(job_);
   {

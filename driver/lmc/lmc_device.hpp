@@ -80,6 +80,7 @@ class LmcDevice : public CommandDevice {
   void pause();   // StopList: the board holds with the laser off
   void resume();  // RestartList
   Vec2 query_position();                     // GetPositionXY, mm
+  std::uint16_t query_status();              // the board's status register (lmc::status bits)
   void set_red_pointer(bool on);             // single WritePort (idle only)
   // Traces the polylines (mm) with the red pointer until `laps` are done or abort() is called;
   // then the red pointer is switched off. Idle only. Points outside the field are refused.

@@ -404,6 +404,7 @@ TEST(LmcDevice, PauseHoldsAndResumeFinishesTheJob) {
   dev.begin_job(test::header_with(fast_pen()));
   dev.submit(cmds);  // 6 packets: the last ones wait for room, so the list is running
   dev.pause();
+  EXPECT_EQ(dev.query_status() & (status::busy | status::paused), status::busy | status::paused);
   const std::uint64_t moves = bench.board.state().executor.moves;
   std::this_thread::sleep_for(std::chrono::milliseconds(60));
   BoardState s = bench.board.state();
@@ -417,6 +418,11 @@ TEST(LmcDevice, PauseHoldsAndResumeFinishesTheJob) {
   EXPECT_EQ(s.executor.moves, cmds.size());
   EXPECT_EQ(s.executor.underrun_events, 0u);
   EXPECT_TRUE(bench.board.violations().empty());
+  EXPECT_EQ(dev.query_status() & status::busy, 0);
+  // Where the mirrors stopped: the serpentine's last point.
+  const Vec2 at = dev.query_position();
+  EXPECT_NEAR(at.x, cmds.back().x_mm, 0.002);
+  EXPECT_NEAR(at.y, cmds.back().y_mm, 0.002);
 }
 
 TEST(LmcDevice, OutOfFieldIsRefusedBeforeAnythingOfItIsSent) {

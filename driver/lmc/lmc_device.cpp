@@ -378,8 +378,9 @@ void LmcDevice::reset() {
       identity_ = session_.initialise(options_.init,
                                       options_.correction ? &*options_.correction : nullptr);
     }
-    // After a stop the mirrors are wherever they stopped: ask, so the next jump's length is right.
-    if (s != DeviceState::idle) encoder_.set_position(session_.position());
+    // After a stop the mirrors are wherever they stopped: ask, so the next jump's length is
+    // right. (After a finished job the encoder knows where it left them.)
+    if (s == DeviceState::aborted || s == DeviceState::failed) encoder_.set_position(session_.position());
   } catch (const std::exception& e) {
     throw DeviceFaultError(DeviceFault{FaultCategory::transport,
                                        "lmc: reset could not reach the board: " + std::string(e.what()),
@@ -395,7 +396,12 @@ DeviceReport LmcDevice::report() const {
   std::lock_guard lock(state_mutex_);
   r.outcome = state_;
   r.fault = fault_;
-  r.commands_done = state_ == DeviceState::done ? commands_ : (fault_ ? fault_->at : commands_sent_.load());
+  // Done: everything. Failed: what the fault says. Aborted: what had been sent, if the list had
+  // started (ExecuteList), else nothing.
+  r.commands_done = state_ == DeviceState::done ? commands_
+                    : fault_                     ? fault_->at
+                    : session_.executing()       ? commands_sent_.load()
+                                                 : 0;
   r.device_time_s = device_time_s_;
   r.figures = figures_;
   return r;

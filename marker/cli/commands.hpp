@@ -33,6 +33,8 @@ Command make_gravure_command();
 Command make_job_command();
 Command make_serial_command();
 Command make_log_command();
+Command make_devices_command();
+Command make_frame_command();
 
 std::vector<Command> all_commands();
 

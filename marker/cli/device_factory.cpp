@@ -1,19 +1,24 @@
 #include "marker/cli/device_factory.hpp"
 
+#include "driver/lmc/lmc_open.hpp"
 #include "driver/sim_scanner.hpp"
 #include "fonts/error.hpp"
 
 namespace mark::cli {
 
 std::unique_ptr<Device> open_device(const std::string& spec, const JobSpec& job,
-                                    const SimSettings& sim) {
+                                    const SimSettings& sim, const LmcArgs& lmc) {
   if (spec == "sim") {
     SimScannerOptions o = simulator_options(job);
     o.fault_at = sim.fault_at;
     o.trace = sim.trace;
     return std::make_unique<SimScanner>(std::move(o));
   }
-  throw InputError("--device '" + spec + "' is not a known device (sim: the simulated scanner)");
+  if (const auto board = lmc::parse_lmc_spec(spec))
+    return lmc::open_lmc(*board, to_lmc_options(lmc, job.head.field_mm));
+  throw InputError("--device '" + spec +
+                   "' is not a known device (sim: the simulated scanner; lmc, lmc:SERIAL, "
+                   "lmc-capture:FILE: a BJJCZ LMC board)");
 }
 
 }  // namespace mark::cli

@@ -1,11 +1,13 @@
 #pragma once
 // `--device` on the command line: which device a job runs on. "sim" (the default) is the
-// simulated scanner for the job's head and tick; further kinds are added here as drivers land.
+// simulated scanner for the job's head and tick; "lmc", "lmc:SERIAL" and "lmc-capture:FILE" a
+// BJJCZ LMC board over USB (or its bytes captured to a file), its lens field the job's field.
 #include <cstdint>
 #include <memory>
 #include <string>
 
 #include "driver/device.hpp"
+#include "marker/cli/lmc_options.hpp"
 #include "marker/job/job.hpp"
 
 namespace mark::cli {
@@ -19,6 +21,6 @@ struct SimSettings {
 // The device named by `spec` for this job. Throws InputError naming the option and the kinds
 // known.
 std::unique_ptr<Device> open_device(const std::string& spec, const JobSpec& job,
-                                    const SimSettings& sim);
+                                    const SimSettings& sim, const LmcArgs& lmc = {});
 
 }  // namespace mark::cli

@@ -1,6 +1,7 @@
-// `marker mark TEXT [layout options] [--device sim] [--head SL10|SL14|cheap]
-//  [--corner blanking|delays|none] [--speed MM_S] [--preview FILE.png] [--virtual-time] [--json]
-//  [--inject KIND@N] [--trace FILE.csv] [--require-quality high|good]`
+// `marker mark TEXT [layout options] [--device sim|lmc[:SERIAL]|lmc-capture:FILE]
+//  [--head SL10|SL14|cheap] [--corner blanking|delays|none] [--speed MM_S] [--power PCT]
+//  [--frequency KHZ] [--pulse-width NS] [--preview FILE.png] [--virtual-time] [--json]
+//  [--inject KIND@N] [--trace FILE.csv] [--require-quality high|good] [LMC options]`
 // `marker mark --job FILE [--set NAME=VALUE …] [--count N] [--store PATH|URL] [--station NAME]
 //  [--remark ID]`: the production run, in mark_job.cpp.
 // The main job: real time by default (the drain paced at the tick, so the line memory is written
@@ -26,6 +27,7 @@
 #include "marker/cli/inject_option.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
+#include "marker/cli/lmc_options.hpp"
 #include "marker/cli/mark_job.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
@@ -58,6 +60,8 @@ struct MarkArgs {
   std::string trace;
   std::string inject;
   std::string require_quality;
+  LaserSettings laser;
+  LmcArgs lmc;
   bool virtual_time = false;
   bool json = false;
   MarkJobArgs production;  // --job and its options
@@ -100,6 +104,7 @@ JobSpec make_spec(const MarkArgs& a) {
   }
   if (a.run_in_mm) spec.pen.run_in_mm = *a.run_in_mm;
   if (a.run_out_mm) spec.pen.run_out_mm = *a.run_out_mm;
+  spec.laser = a.laser;
   return spec;
 }
 
@@ -118,9 +123,9 @@ nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobOptions&
   return j;
 }
 
-void print_summary(const JobSpec& spec, const JobResult& r) {
+void print_summary(const JobSpec& spec, const JobResult& r, const std::string& device) {
   std::printf("marked %zu glyphs (%zu strokes, %zu commands) on %s, %s corners, %.0f mm/s\n",
-              r.glyphs, r.strokes, r.commands, spec.head.name.c_str(),
+              r.glyphs, r.strokes, r.commands, device.c_str(),
               std::string(to_string(spec.pen.corner)).c_str(), spec.pen.mark_speed_mm_s);
   std::printf("mark time %.4f s (device), %llu samples, compile %.1f µs, jumps %.1f mm, "
               "underruns %llu\n",
@@ -139,12 +144,18 @@ void print_summary(const JobSpec& spec, const JobResult& r) {
 }
 
 // Where a job that did not finish stopped, on one line (stderr).
-void print_stop(const JobResult& r, const JobSpec& spec, bool interrupted) {
+void print_stop(const JobResult& r, const JobSpec& spec, bool interrupted, DeviceLevel level) {
   const double t = static_cast<double>(r.stopped_at) * spec.pen.tick_s;
   std::string why = r.outcome == JobOutcome::aborted
                         ? (interrupted ? "interrupted" : "aborted")
                         : "failed (" + std::string(to_string(r.fault->category)) + ": " +
                               r.fault->message + ")";
+  if (level == DeviceLevel::commands) {
+    // A vector board: the stop point is a device command; its own clock is not the locus tick.
+    std::fprintf(stderr, "marker: mark %s at device command %llu: %.1f %% of the ink marked at most\n",
+                 why.c_str(), static_cast<unsigned long long>(r.stopped_at), 100 * r.ink_marked);
+    return;
+  }
   std::fprintf(stderr,
                "marker: mark %s at sample %llu (%.4f s device time): %.1f %% of the ink marked, "
                "laser off\n",
@@ -215,7 +226,7 @@ int run_mark(const MarkArgs& a) {
   SimSettings sim_settings;
   sim_settings.fault_at = inject.device_fault_at;
   sim_settings.trace = !a.trace.empty();
-  const std::unique_ptr<Device> device = open_device(a.device, spec, sim_settings);
+  const std::unique_ptr<Device> device = open_device(a.device, spec, sim_settings, a.lmc);
   auto* scanner = dynamic_cast<SimScanner*>(device.get());
   if (!scanner && (!a.preview.empty() || !a.dose_png.empty() || !a.trace.empty()))
     throw InputError("--preview, --dose-png and --trace need the simulated scanner (--device sim)");
@@ -237,11 +248,11 @@ int run_mark(const MarkArgs& a) {
   if (a.json) {
     std::cout << to_json(a, spec, options, r, device->describe().name).dump() << "\n";
   } else {
-    print_summary(spec, r);
+    print_summary(spec, r, device->describe().name);
     if (!a.preview.empty()) std::printf("wrote %s\n", a.preview.c_str());
   }
   if (r.outcome != JobOutcome::done) {
-    print_stop(r, spec, interrupt_flag().requested());
+    print_stop(r, spec, interrupt_flag().requested(), device->describe().level);
     return r.outcome == JobOutcome::aborted ? kExitInterrupted : 1;
   }
   if (r.quality && classify(*r.quality) == QualityClass::poor)
@@ -298,7 +309,10 @@ Command make_mark_command() {
         sub->add_option("text", a->text, "text to mark (UTF-8; \\n starts a new line); or --job FILE");
         add_layout_options(*sub, a->layout);
         modes->shared.push_back(
-            sub->add_option("--device", a->device, "device: sim (the simulated scanner); with --job the job's")
+            sub->add_option("--device", a->device,
+                            "device: sim (the simulated scanner), lmc or lmc:SERIAL (a BJJCZ board, see "
+                            "'marker devices'), lmc-capture:FILE (the board's bytes to a file); with --job "
+                            "the job's unless given")
                 ->capture_default_str());
         sub->add_option("--head", a->head, "scan head preset: SL10, SL14, cheap")->capture_default_str();
         sub->add_option("--corner", a->corner, "corner strategy: blanking, delays, none")->capture_default_str();
@@ -343,6 +357,15 @@ Command make_mark_command() {
             sub->add_option("--station", p.station, "--job: station name in the audit log (default: host name)"),
             add_ranged_option(*sub, "--remark", p.remark,
                               "--job: mark the part of audit row ID again (no number consumed)", kAuditRowRange)};
+        add_ranged_option(*sub, "--power", a->laser.power_pct, "laser power, % of the source", kPowerRange)
+            ->capture_default_str();
+        add_ranged_option(*sub, "--frequency", a->laser.frequency_khz, "pulse repetition rate (Q-switch), kHz",
+                          kFrequencyRange)
+            ->capture_default_str();
+        add_ranged_option(*sub, "--pulse-width", a->laser.pulse_width_ns,
+                          "MOPA pulse width, ns (0: the source's default; LMC --source mopa)", kPulseWidthRange)
+            ->capture_default_str();
+        add_lmc_options(*sub, a->lmc);
         return sub;
       },
       [a, modes] { return run_mark_mode(*a, *modes); });

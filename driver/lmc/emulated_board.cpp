@@ -1,0 +1,349 @@
+#include "driver/lmc/emulated_board.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace mark::lmc {
+namespace {
+
+constexpr double kTick_s = 10e-6;
+
+std::string hex(std::uint16_t v) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "0x%04X", v);
+  return buf;
+}
+
+}  // namespace
+
+EmulatedBoard::EmulatedBoard(BoardOptions options, BoardFaults faults)
+    : options_(options),
+      faults_(faults),
+      units_(options.field_mm, options.axes, options.polygon_delay_unit),
+      executor_(units_, options.laser_bit, options.red_bit) {
+  executor_.set_scanner(options_.scanner);
+}
+
+EmulatedBoard::~EmulatedBoard() { stop_clock(); }
+
+void EmulatedBoard::violation(std::string what) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "[t=%.5f s] ", double(ticks_) * kTick_s);
+  violations_.push_back(buf + what);
+}
+
+bool EmulatedBoard::ready_locked() const {
+  const double now = double(ticks_) * kTick_s;
+  return !unplugged_ && now >= withhold_until_s_ && buffer_.size() < options_.list_capacity;
+}
+
+std::uint16_t EmulatedBoard::status_locked() const {
+  std::uint16_t s = 0;
+  if (ready_locked()) s |= status::ready;
+  if (executor_.executing()) s |= status::busy;
+  if (executor_.executing() && executor_.paused()) s |= status::paused;
+  return s;
+}
+
+// ---------------------------------------------------------------------------------------------
+// USB side
+
+Urb EmulatedBoard::out(std::span<const std::uint8_t> bytes) {
+  std::unique_lock lock(mutex_);
+  const double now = double(ticks_) * kTick_s;
+  if (unplugged_) return Urb::no_device;
+  if (now < hang_until_s_) return Urb::pending;
+  if (stalled_) return Urb::stall;
+  if (bytes.size() == kCommandBytes) {
+    const Word w = load(bytes.data());
+    wire_.push_back(WireRecord{now, false, w, 0, status_locked()});
+    on_single(w);
+    return Urb::done;
+  }
+  if (bytes.size() != kPacketBytes) {
+    violation("a transfer of " + std::to_string(bytes.size()) + " bytes (the board takes 12 or 3072)");
+    return Urb::stall;
+  }
+  const std::size_t number = ++packets_seen_;
+  if (faults_.unplug_at_packet == number) {
+    unplug_locked();
+    lock.unlock();
+    if (on_unplug) on_unplug();
+    return Urb::no_device;
+  }
+  if (faults_.hang_at_packet == number) {
+    hang_until_s_ = faults_.hang_s > 0 ? now + faults_.hang_s : std::numeric_limits<double>::infinity();
+    return Urb::pending;
+  }
+  if (faults_.stall_at_packet == number) {
+    stalled_ = true;
+    return Urb::stall;
+  }
+  wire_.push_back(WireRecord{now, true, {}, number, status_locked()});
+  if (!ready_locked()) {
+    violation("list packet " + std::to_string(number) + " arrived while READY was clear: lost");
+    ++packets_lost_;
+    return Urb::done;
+  }
+  on_packet(bytes);
+  if (faults_.withhold_ready_after_packet == number) withhold_until_s_ = now + faults_.withhold_ready_s;
+  return Urb::done;
+}
+
+Urb EmulatedBoard::in(std::array<std::uint8_t, kReplyBytes>& reply) {
+  std::lock_guard lock(mutex_);
+  if (unplugged_) return Urb::no_device;
+  if (double(ticks_) * kTick_s < hang_until_s_) return Urb::pending;
+  if (stalled_) return Urb::stall;
+  if (replies_.empty()) return Urb::pending;
+  reply = replies_.front();
+  replies_.pop_front();
+  return Urb::done;
+}
+
+void EmulatedBoard::clear_halt() {
+  std::lock_guard lock(mutex_);
+  stalled_ = false;
+}
+
+void EmulatedBoard::on_single(const Word& w) {
+  const std::uint16_t op = w.opcode();
+  const CommandSpec* spec = find_command(op);
+  if (is_list(op)) violation("list command " + hex(op) + " sent alone as a single command");
+  else if (!spec) violation("unknown single command " + hex(op));
+  Reply r;
+  switch (static_cast<Op>(op)) {
+    case Op::GetSerialNo:
+      r.w = {0, std::uint16_t(options_.serial >> 16), std::uint16_t(options_.serial & 0xFFFF), 0};
+      break;
+    case Op::GetVersion:
+      r.w = {options_.version[0], options_.version[1], options_.version[2], 0};
+      break;
+    case Op::GetPositionXY: {
+      const auto p = executor_.position();
+      r.w = {0, p[0], p[1], 0};
+      break;
+    }
+    case Op::ReadPort: r.w = {0, options_.input_port, 0, 0}; break;
+    case Op::GetMarkTime: {
+      const std::uint64_t t = executor_.figures().ticks;
+      r.w = {0, std::uint16_t(t >> 16), std::uint16_t(t & 0xFFFF), 0};
+      break;
+    }
+    case Op::ExecuteList:
+      executor_.start();
+      execute_at_s_ = double(ticks_) * kTick_s;
+      break;
+    case Op::StopExecute:
+    case Op::ResetList:
+      executor_.stop();
+      buffer_.clear();
+      cursor_ = 0;
+      break;
+    case Op::StopList: executor_.set_paused(true); break;
+    case Op::RestartList: executor_.set_paused(false); break;
+    case Op::WritePort: executor_.write_port(w.p(1)); break;
+    case Op::FiberSetMo: executor_.set_mo(w.p(1) != 0); break;
+    case Op::EnableLaser: executor_.set_enabled(laser_enabled_ = true); break;
+    case Op::DisableLaser: executor_.set_enabled(laser_enabled_ = false); break;
+    case Op::GotoXY:
+      if (!executor_.executing()) executor_.goto_xy({w.p(1), w.p(2)});
+      break;
+    case Op::WriteCorTable:
+      cor_table_ = w.p(1);
+      cor_open_ = w.p(1) != 0;
+      cor_lines_ = 0;
+      break;
+    case Op::WriteCorLine:
+      if (!cor_open_) violation("WriteCorLine without WriteCorTable(1)");
+      if (w.p(3) != (cor_lines_ == 0 ? 0 : 1))
+        violation("WriteCorLine " + std::to_string(cor_lines_) + " has first-flag " + std::to_string(w.p(3)));
+      if (++cor_lines_ > 65 * 65) violation("more than 65 × 65 WriteCorLine");
+      break;
+    default: break;
+  }
+  if (spec && !spec->reply) return;
+  r.w[3] = status_locked();
+  replies_.push_back(encode_reply(r));
+}
+
+void EmulatedBoard::on_packet(std::span<const std::uint8_t> bytes) {
+  std::vector<Word> words(kCommandsPerPacket);
+  bool ended = false;
+  const std::size_t number = packets_seen_;
+  for (std::size_t i = 0; i < kCommandsPerPacket; ++i) {
+    const Word w = load(bytes.data() + i * kCommandBytes);
+    words[i] = w;
+    const std::uint16_t op = w.opcode();
+    const std::string where = " in packet " + std::to_string(number) + " slot " + std::to_string(i);
+    if (ended) {
+      if (w != word(Op::EndOfList)) violation("a command after EndOfList" + where + ": " + hex(op));
+      continue;
+    }
+    if (!is_list(op)) violation("single command " + hex(op) + where);
+    else if (!find_command(op)) violation("unknown list command " + hex(op) + where);
+    if (op == static_cast<std::uint16_t>(Op::EndOfList)) ended = true;
+  }
+  packets_.push_back(words);
+  buffer_.push_back(std::move(words));
+}
+
+// ---------------------------------------------------------------------------------------------
+// The list feed (the executor reads the buffered packets through it)
+
+const Word* EmulatedBoard::peek() {
+  while (!buffer_.empty() && cursor_ >= kCommandsPerPacket) {
+    buffer_.pop_front();
+    cursor_ = 0;
+  }
+  return buffer_.empty() ? nullptr : &buffer_.front()[cursor_];
+}
+
+void EmulatedBoard::pop() {
+  const Word w = buffer_.front()[cursor_++];
+  // EndOfList ends the list: the rest of its packet is padding.
+  if (w.opcode() == static_cast<std::uint16_t>(Op::EndOfList) || cursor_ >= kCommandsPerPacket) {
+    buffer_.pop_front();
+    cursor_ = 0;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Clock
+
+void EmulatedBoard::advance_locked(std::uint64_t ticks) {
+  const bool was_finished = executor_.finished();
+  try {
+    executor_.run(ticks, *this);
+  } catch (const std::exception& e) {
+    violation(std::string("the scanner refused the board's output: ") + e.what());
+    executor_.stop();
+  }
+  ticks_ += ticks;
+  if (!was_finished && executor_.finished()) finished_cv_.notify_all();
+}
+
+void EmulatedBoard::advance(double seconds) {
+  std::uint64_t ticks = static_cast<std::uint64_t>(std::llround(seconds / kTick_s));
+  bool notify = false;
+  {
+    std::lock_guard lock(mutex_);
+    if (faults_.unplug_after_execute_s && execute_at_s_ && !unplugged_) {
+      const double at = *execute_at_s_ + *faults_.unplug_after_execute_s;
+      const double now = double(ticks_) * kTick_s;
+      if (now + double(ticks) * kTick_s >= at) {
+        const auto first = static_cast<std::uint64_t>(std::max(0.0, std::ceil((at - now) / kTick_s)));
+        advance_locked(std::min(first, ticks));
+        ticks -= std::min(first, ticks);
+        unplug_locked();
+        notify = true;
+      }
+    }
+    advance_locked(ticks);
+  }
+  if (notify && on_unplug) on_unplug();
+}
+
+void EmulatedBoard::start_clock(double time_scale) {
+  stop_clock();
+  clock_run_ = true;
+  clock_ = std::thread([this, time_scale] {
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
+    std::uint64_t done = 0;
+    while (clock_run_.load()) {
+      std::this_thread::sleep_for(std::chrono::microseconds(500));
+      const double elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
+      const auto due = static_cast<std::uint64_t>(elapsed * time_scale / kTick_s);
+      if (due > done) {
+        advance(double(due - done) * kTick_s);
+        done = due;
+      }
+    }
+  });
+}
+
+void EmulatedBoard::stop_clock() {
+  clock_run_ = false;
+  if (clock_.joinable()) clock_.join();
+}
+
+void EmulatedBoard::unplug_locked() {
+  unplugged_ = true;
+  replies_.clear();
+}
+
+void EmulatedBoard::unplug() {
+  {
+    std::lock_guard lock(mutex_);
+    if (unplugged_) return;
+    unplug_locked();
+  }
+  if (on_unplug) on_unplug();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Inspection
+
+BoardState EmulatedBoard::state() const {
+  std::lock_guard lock(mutex_);
+  BoardState s;
+  s.port = executor_.port();
+  s.laser_emitting = executor_.emitting();
+  s.executing = executor_.executing();
+  s.paused = executor_.paused();
+  s.finished = executor_.finished();
+  s.mo_open = executor_.mo_open();
+  s.laser_enabled = laser_enabled_;
+  s.unplugged = unplugged_;
+  s.buffered_packets = buffer_.size();
+  s.status = status_locked();
+  s.device_time_s = double(ticks_) * kTick_s;
+  s.position = executor_.position();
+  s.executor = executor_.figures();
+  s.packets_received = packets_.size();
+  s.packets_lost = packets_lost_;
+  s.cor_lines = cor_lines_;
+  s.cor_table = cor_table_;
+  return s;
+}
+
+bool EmulatedBoard::unplugged() const {
+  std::lock_guard lock(mutex_);
+  return unplugged_;
+}
+
+std::vector<WireRecord> EmulatedBoard::wire() const {
+  std::lock_guard lock(mutex_);
+  return wire_;
+}
+
+std::vector<std::vector<Word>> EmulatedBoard::packets() const {
+  std::lock_guard lock(mutex_);
+  return packets_;
+}
+
+std::vector<std::string> EmulatedBoard::violations() const {
+  std::lock_guard lock(mutex_);
+  return violations_;
+}
+
+std::vector<Vec2> EmulatedBoard::red_path() const {
+  std::lock_guard lock(mutex_);
+  return executor_.red_path();
+}
+
+bool EmulatedBoard::wait_finished(double timeout_s) const {
+  std::unique_lock lock(mutex_);
+  return finished_cv_.wait_for(lock, std::chrono::duration<double>(timeout_s),
+                               [this] { return executor_.finished(); });
+}
+
+void EmulatedBoard::inspect(const std::function<void()>& f) const {
+  std::lock_guard lock(mutex_);
+  f();
+}
+
+}  // namespace mark::lmc

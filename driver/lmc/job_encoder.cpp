@@ -1,0 +1,216 @@
+#include "driver/lmc/job_encoder.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace mark::lmc {
+namespace {
+
+// The hot path below builds words directly with the unit encoders; these pin its parameter
+// layout to the table, so the table stays the one description of the wire.
+constexpr bool layout(Op op, std::initializer_list<Unit> units) {
+  const CommandSpec& s = spec_of(op);
+  std::size_t i = 0;
+  for (Unit u : units)
+    if (i >= s.count || s.params[i++].unit != u) return false;
+  return i == s.count;
+}
+static_assert(layout(Op::JumpTo, {Unit::x, Unit::y, Unit::word, Unit::distance}));
+static_assert(layout(Op::MarkTo, {Unit::x, Unit::y, Unit::word, Unit::distance}));
+static_assert(layout(Op::JumpSpeed, {Unit::speed}) && layout(Op::MarkSpeed, {Unit::speed}));
+static_assert(layout(Op::LaserOnDelay, {Unit::signed_us}) &&
+              layout(Op::LaserOffDelay, {Unit::signed_us}) &&
+              layout(Op::JumpDelay, {Unit::signed_us}));
+static_assert(layout(Op::PolygonDelay, {Unit::polygon_delay}));
+static_assert(layout(Op::DelayTime, {Unit::time_10us}) && layout(Op::LaserOnPoint, {Unit::dwell_10us}));
+static_assert(layout(Op::QSwitchPeriod, {Unit::period_50ns}) &&
+              layout(Op::MarkCurrent, {Unit::power_12bit}) &&
+              layout(Op::FiberYLPMPulseWidth, {Unit::pulse_width_ns}));
+static_assert(layout(Op::ListWritePort, {Unit::port}) && layout(Op::ReadyMark, {}) &&
+              layout(Op::EndOfList, {}));
+
+constexpr std::uint32_t kMaxDelayTicks = 0xFFFF;   // DelayTime
+constexpr std::uint32_t kMaxDwellTicks = 60000;    // LaserOnPoint (galvo.md §1.4)
+
+std::string pen_name(std::size_t i, const char* what) {
+  return "pen " + std::to_string(i) + ": " + what;
+}
+
+double signed_s(std::array<std::uint16_t, 2> d) { return decode_signed_us(d[0], d[1]); }
+
+}  // namespace
+
+BoardPen encode_pen(const DevicePen& p, std::size_t i, const FieldUnits& u, LaserSource source) {
+  BoardPen b;
+  b.jump_speed = encode_speed(p.jump_speed_mm_s, u, pen_name(i, "jump speed"));
+  b.mark_speed = encode_speed(p.mark_speed_mm_s, u, pen_name(i, "mark speed"));
+  b.laser_on_delay = encode_signed_us(p.laser_on_delay_s, pen_name(i, "laser-on delay"));
+  b.laser_off_delay = encode_signed_us(p.laser_off_delay_s, pen_name(i, "laser-off delay"));
+  b.jump_delay = encode_signed_us(p.jump_delay_s, pen_name(i, "jump delay"));
+  b.polygon_delay = encode_polygon_delay(p.polygon_delay_s, u.polygon_unit());
+  b.mark_delay_10us = encode_time_10us(p.mark_delay_s, kMaxDelayTicks, pen_name(i, "mark delay"));
+  b.qswitch_period = encode_period_50ns(p.laser.frequency_khz);
+  b.power = encode_power_12bit(p.laser.power_pct);
+  if (source == LaserSource::mopa && p.laser.pulse_width_ns > 0)
+    b.pulse_width = encode_pulse_width_ns(p.laser.pulse_width_ns);
+  return b;
+}
+
+JobEncoder::JobEncoder(const FieldUnits& units, PacketSink sink)
+    : units_(units), sink_(std::move(sink)) {}
+
+void JobEncoder::emit_packet(const PacketInfo& info) {
+  sink_(packet_, info);
+  ++figures_.packets;
+  figures_.list_commands += packet_.used();
+  figures_.estimated_s += packet_estimate_s_;
+  packet_.clear();
+  packet_estimate_s_ = 0;
+}
+
+void JobEncoder::flush_full() {
+  // Commands before the one being encoded are complete; its own words may straddle.
+  emit_packet(PacketInfo{current_, packet_estimate_s_, false});
+}
+
+void JobEncoder::start_list(double open_mo_delay_s, std::uint16_t port_bits) {
+  // Whatever a failed or aborted list left unsent is dropped here: it must never reach the
+  // board as part of the next list.
+  packet_.clear();
+  packet_estimate_s_ = 0;
+  jump_speed_ = mark_speed_ = kUnknown;
+  qswitch_.reset(), power_.reset();
+  pulse_width_.reset(), on_delay_.reset(), off_delay_.reset(), polygon_.reset();
+  in_run_ = false;
+  pen_ = nullptr;
+  push(word(Op::ReadyMark));
+  if (open_mo_delay_s > 0) {
+    const std::uint16_t t = encode_time_10us(open_mo_delay_s, kMaxDelayTicks, "open-MO delay");
+    push(word(Op::DelayTime, t), t * 1e-5);
+  }
+  push(word(Op::ListWritePort, port_bits));
+}
+
+void JobEncoder::send_jump_speed(std::uint16_t w) {
+  push(word(Op::JumpSpeed, w));
+  ++figures_.parameter_commands;
+  jump_speed_ = w;
+}
+
+// The board keeps its jump delay across lists, and nothing documents its power-on value. Like
+// meerk40t (whose golden job sends no JumpDelay) this takes it as 0 on a fresh connection and
+// then tracks every value sent, so a pen with jump delay 0 after one with 200 µs does send 0.
+void JobEncoder::send_jump_delay(std::array<std::uint16_t, 2> d) {
+  push(word(Op::JumpDelay, d[0], d[1]));
+  ++figures_.parameter_commands;
+  jump_delay_ = d;
+  jump_delay_s_ = std::max(0.0, signed_s(d));
+}
+
+void JobEncoder::apply_pen(const BoardPen& p) {
+  pen_ = &p;
+  const auto param = [this](auto& have, auto value, const Word& c) {
+    if (have == value) return;
+    push(c);
+    ++figures_.parameter_commands;
+    have = value;
+  };
+  set_jump_speed(p.jump_speed);
+  if (p.pulse_width) param(pulse_width_, *p.pulse_width, word(Op::FiberYLPMPulseWidth, *p.pulse_width));
+  param(qswitch_, p.qswitch_period, word(Op::QSwitchPeriod, p.qswitch_period));
+  param(power_, p.power, word(Op::MarkCurrent, p.power));
+  if (mark_speed_ != p.mark_speed) {
+    push(word(Op::MarkSpeed, p.mark_speed));
+    ++figures_.parameter_commands;
+    mark_speed_ = p.mark_speed;
+  }
+  param(on_delay_, p.laser_on_delay, word(Op::LaserOnDelay, p.laser_on_delay[0], p.laser_on_delay[1]));
+  param(off_delay_, p.laser_off_delay, word(Op::LaserOffDelay, p.laser_off_delay[0], p.laser_off_delay[1]));
+  param(polygon_, p.polygon_delay, word(Op::PolygonDelay, p.polygon_delay[0], p.polygon_delay[1]));
+  set_jump_delay(p.jump_delay);
+}
+
+void JobEncoder::move(Op op, double x_mm, double y_mm, std::uint16_t speed_word) {
+  const auto to = units_.point(x_mm, y_mm);
+  if (to[0] == at_[0] && to[1] == at_[1]) return;  // nowhere to go (meerk40t drops these too)
+  const double length = segment_length(at_, to);
+  const std::uint16_t d = length >= 65535.0 ? std::uint16_t(0xFFFF) : static_cast<std::uint16_t>(length);
+  // The estimate: length / speed (units per ms); the reciprocal is cached per speed word.
+  if (speed_word != inverse_for_) {
+    inverse_for_ = speed_word;
+    inverse_speed_ = 1.0 / (double(speed_word) * 1000.0);
+  }
+  double t = length * inverse_speed_;
+  if (op == Op::JumpTo) t += jump_delay_s_;
+  push_move(op, to, d, t);
+  ++figures_.moves;
+  at_ = to;
+}
+
+void JobEncoder::end_run() {
+  if (!in_run_) return;
+  in_run_ = false;
+  if (pen_ && pen_->mark_delay_10us) push(word(Op::DelayTime, pen_->mark_delay_10us), pen_->mark_delay_10us * 1e-5);
+}
+
+void JobEncoder::add(const DeviceCommand& c, std::uint64_t index) {
+  current_ = index;
+  switch (c.op) {
+    case DeviceOp::pen:
+      // The caller resolves the index to a BoardPen and calls apply_pen; nothing on the wire.
+      return;
+    case DeviceOp::mark: {
+      const std::uint16_t v = c.speed_mm_s > 0 ? encode_speed(c.speed_mm_s, units_, "mark speed")
+                                               : pen_->mark_speed;
+      if (mark_speed_ != v) {
+        push(word(Op::MarkSpeed, v));
+        ++figures_.parameter_commands;
+        mark_speed_ = v;
+      }
+      move(Op::MarkTo, c.x_mm, c.y_mm, v);
+      in_run_ = true;
+      return;
+    }
+    case DeviceOp::jump: {
+      if (c.speed_mm_s > 0) {
+        // A blanking line: constant speed, no jump delay, and it does not end the mark run's
+        // laser-off delay (the board runs that concurrently).
+        const std::uint16_t v = encode_speed(c.speed_mm_s, units_, "blanking line speed");
+        in_run_ = false;
+        set_jump_speed(v);
+        set_jump_delay({0, 0});
+        move(Op::JumpTo, c.x_mm, c.y_mm, v);
+      } else {
+        end_run();
+        set_jump_speed(pen_->jump_speed);
+        set_jump_delay(pen_->jump_delay);
+        move(Op::JumpTo, c.x_mm, c.y_mm, pen_->jump_speed);
+      }
+      return;
+    }
+    case DeviceOp::dwell: {
+      in_run_ = false;
+      double ticks = std::round(c.dwell_s * 1e5);
+      const Op op = c.laser ? Op::LaserOnPoint : Op::DelayTime;
+      const double most = c.laser ? kMaxDwellTicks : kMaxDelayTicks;
+      while (ticks > 0) {
+        const double n = std::min(ticks, most);
+        push(word(op, static_cast<std::uint16_t>(n)), n * 1e-5);
+        ticks -= n;
+      }
+      return;
+    }
+    case DeviceOp::arc:
+      throw EncodeError("lmc: command " + std::to_string(index) +
+                        " is an arc; the board takes no arcs (describe().arcs = false): chord it");
+  }
+}
+
+void JobEncoder::finish(std::uint64_t commands_in_job) {
+  current_ = commands_in_job;
+  end_run();
+  push(word(Op::EndOfList));
+  emit_packet(PacketInfo{commands_in_job, packet_estimate_s_, true});
+}
+
+}  // namespace mark::lmc

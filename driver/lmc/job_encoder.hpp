@@ -1,0 +1,143 @@
+#pragma once
+// Device commands → LMC list commands → 3072-byte packets, with no I/O: the part of the driver
+// the encoding benchmark measures and the golden-rectangle test checks byte for byte.
+//
+// What each DeviceCommand becomes (docs/lmc.md has the full table):
+// - pen i:   the pen's parameters, each only when its word differs from what the board has:
+//            JumpSpeed, FiberYLPMPulseWidth (MOPA), QSwitchPeriod, MarkCurrent, MarkSpeed,
+//            LaserOnDelay, LaserOffDelay, PolygonDelay, JumpDelay.
+// - mark:    MarkSpeed when the speed word changes, MarkTo.
+// - jump at speed 0 (travel): after a mark run the pen's mark delay as DelayTime (the board has
+//            no mark-delay register: meerk40t's "end delay"), JumpSpeed / JumpDelay back to the
+//            pen's when they differ, JumpTo. The board adds its jump delay after it.
+// - jump at speed v ≠ 0 (a blanking run-in, run-out or join): a JumpTo at JumpSpeed v with the
+//            board's JumpDelay set to 0. The LMC list has no "laser-off line at marking speed"
+//            command, and a MarkTo with the power or port turned down is not laser-off on every
+//            source (a fiber's simmer, a CO2 tickle) and would fire polygon delays. A JumpTo is
+//            a straight constant-speed move with the laser gated off — exactly what a blanking
+//            line is — as long as no jump delay stops the mirrors halfway through the run-in.
+//            The laser-off delay still runs into it, which is what makes a run-out work.
+// - dwell:   laser off: DelayTime (10 µs units, split at 0xFFFF); laser on: LaserOnPoint (split
+//            at 60000, the documented limit).
+// - arc:     refused (describe() says arcs = false: the job chords arcs first).
+// Moves to the point the mirrors are already at are dropped, as the reference drivers do.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "driver/device.hpp"
+#include "driver/lmc/codec.hpp"
+
+namespace mark::lmc {
+
+enum class LaserSource {
+  fiber,  // Q-switched fiber: QSwitchPeriod + MarkCurrent, master oscillator opened per job
+  mopa    // MOPA fiber: the same plus FiberYLPMPulseWidth
+};
+
+// A pen in board words, checked once at begin_job so a bad value is refused before anything
+// is sent.
+struct BoardPen {
+  std::uint16_t jump_speed = 0;
+  std::uint16_t mark_speed = 0;
+  std::array<std::uint16_t, 2> laser_on_delay{}, laser_off_delay{}, polygon_delay{}, jump_delay{};
+  std::uint16_t qswitch_period = 0;
+  std::uint16_t power = 0;
+  std::optional<std::uint16_t> pulse_width;
+  std::uint16_t mark_delay_10us = 0;  // DelayTime after a mark run
+};
+
+// Throws EncodeError naming the pen ("pen 2: mark speed ...").
+BoardPen encode_pen(const DevicePen& pen, std::size_t index, const FieldUnits& units,
+                    LaserSource source);
+
+// Where a full packet goes, with what it completes: the number of DeviceCommands of the job all
+// of whose list commands are in this or an earlier packet, and the host's estimate of how long
+// the board takes to execute it.
+struct PacketInfo {
+  std::uint64_t commands_complete = 0;
+  double estimated_s = 0;
+  bool last = false;  // the packet holding the job's EndOfList
+};
+using PacketSink = std::function<void(const ListPacket&, const PacketInfo&)>;
+
+// Counted as packets leave (a packet the sink refused, or one dropped by start_list, is not).
+struct EncoderFigures {
+  std::uint64_t list_commands = 0;  // list command words handed on (padding not counted)
+  std::uint64_t packets = 0;
+  std::uint64_t moves = 0;          // JumpTo + MarkTo
+  std::uint64_t parameter_commands = 0;  // speeds, delays, laser settings
+  double estimated_s = 0;           // the host's estimate of the board's execution time
+};
+
+class JobEncoder {
+ public:
+  JobEncoder(const FieldUnits& units, PacketSink sink);
+
+  // A new list (after ResetList): anything left of an earlier list is dropped, then ReadyMark, the open-MO delay as DelayTime (0: none), the
+  // output port as WritePort(list). The board's parameters are forgotten (sent again), except
+  // the jump delay, which the board keeps and this encoder tracks across lists (see .cpp).
+  void start_list(double open_mo_delay_s, std::uint16_t port_bits);
+  void apply_pen(const BoardPen& pen);
+  // Appends one device command (already checked against the field by the caller). `index` is
+  // its index in the job, for PacketInfo::commands_complete.
+  void add(const DeviceCommand& c, std::uint64_t index);
+  // The pen's mark delay if a mark run is open, EndOfList, and the last packet (padded).
+  void finish(std::uint64_t commands_in_job);
+
+  const EncoderFigures& figures() const { return figures_; }
+  std::array<std::uint16_t, 2> position() const { return at_; }
+  // The mirrors' position as the encoder last left it (new device: the field centre).
+  void set_position(std::array<std::uint16_t, 2> at) { at_ = at; }
+  bool in_mark_run() const { return in_run_; }
+
+ private:
+  void push(const Word& c, double estimated_s = 0) {
+    if (packet_.full()) flush_full();
+    packet_.push(c);
+    packet_estimate_s_ += estimated_s;
+  }
+  // A move, straight into the packet (the hot path).
+  void push_move(Op op, std::array<std::uint16_t, 2> to, std::uint16_t distance, double estimated_s) {
+    if (packet_.full()) flush_full();
+    packet_.push(static_cast<std::uint16_t>(op), to[0], to[1], 0, distance);
+    packet_estimate_s_ += estimated_s;
+  }
+  // Hands the packet to the sink and counts it once the sink took it.
+  void emit_packet(const PacketInfo& info);
+  void flush_full();
+  void set_jump_speed(std::uint16_t w) {
+    if (jump_speed_ != w) send_jump_speed(w);
+  }
+  void set_jump_delay(std::array<std::uint16_t, 2> d) {
+    if (jump_delay_[0] != d[0] || jump_delay_[1] != d[1]) send_jump_delay(d);
+  }
+  void send_jump_speed(std::uint16_t w);
+  void send_jump_delay(std::array<std::uint16_t, 2> d);
+  void move(Op op, double x_mm, double y_mm, std::uint16_t speed_word);
+  void end_run();
+
+  FieldUnits units_;
+  PacketSink sink_;
+  ListPacket packet_;
+  double packet_estimate_s_ = 0;
+  std::uint64_t current_ = 0;  // index of the command being encoded
+  EncoderFigures figures_;
+  const BoardPen* pen_ = nullptr;
+  std::array<std::uint16_t, 2> at_{0x8000, 0x8000};
+  bool in_run_ = false;
+  // What the board has now (nullopt: unknown, send it).
+  // The speed words the board has; kUnknown after a new list (sent again).
+  static constexpr std::uint32_t kUnknown = 0x10000;
+  std::uint32_t jump_speed_ = kUnknown, mark_speed_ = kUnknown;
+  std::optional<std::uint16_t> qswitch_, power_, pulse_width_;
+  std::optional<std::array<std::uint16_t, 2>> on_delay_, off_delay_, polygon_;
+  std::array<std::uint16_t, 2> jump_delay_{0, 0};
+  double jump_delay_s_ = 0;            // the jump delay's share of the estimate
+  std::uint32_t inverse_for_ = 0;      // speed word the cached reciprocal belongs to
+  double inverse_speed_ = 0;
+};
+
+}  // namespace mark::lmc

@@ -1,0 +1,495 @@
+#include "driver/lmc/lmc_device.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace mark::lmc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+std::string point_text(double x, double y) {
+  char buf[80];
+  std::snprintf(buf, sizeof buf, "(%.4f, %.4f) mm", x, y);
+  return buf;
+}
+
+const char* op_name(DeviceOp op) {
+  switch (op) {
+    case DeviceOp::pen: return "pen";
+    case DeviceOp::jump: return "jump";
+    case DeviceOp::mark: return "mark";
+    case DeviceOp::arc: return "arc";
+    case DeviceOp::dwell: return "dwell";
+  }
+  return "?";
+}
+
+// One dwell command longer than this is surely a unit mistake (an hour).
+constexpr double kLongestDwell_s = 3600;
+
+}  // namespace
+
+LmcDevice::LmcDevice(std::unique_ptr<LmcLink> link, LmcOptions options)
+    : options_(std::move(options)),
+      units_(options_.field_mm, options_.axes, options_.polygon_delay_unit),
+      link_(std::move(link)),
+      session_(*link_, options_.session, abort_requested_),
+      encoder_(units_, [this](const ListPacket& p, const PacketInfo& i) { send_packet(p, i); }) {
+  const auto bit_ok = [](int b) { return b >= 0 && b < 16; };
+  if (!bit_ok(options_.laser_port_bit) || !bit_ok(options_.red_pointer_bit) ||
+      options_.laser_port_bit == options_.red_pointer_bit)
+    throw DeviceError("lmc: the laser and red-pointer port bits must be two different bits 0..15");
+  if (!(options_.chord_tolerance_mm > 0) || options_.chord_tolerance_mm > 1)
+    throw DeviceError("lmc: chord tolerance must be in (0, 1] mm");
+  try {
+    identity_ = session_.initialise(options_.init,
+                                    options_.correction ? &*options_.correction : nullptr);
+  } catch (const LinkError& e) {
+    throw DeviceFaultError(DeviceFault{
+        e.failure() == LinkFailure::timeout ? FaultCategory::timeout : FaultCategory::transport,
+        "lmc: " + link_->name() + " did not complete the init sequence: " + e.what(), 0});
+  }
+  link_->remember_serial(identity_.serial);
+}
+
+LmcDevice::~LmcDevice() {
+  // A device going away mid-job (an exception unwinding the caller) must not leave the laser on.
+  bool running;
+  {
+    std::lock_guard lock(state_mutex_);
+    running = state_ == DeviceState::running;
+  }
+  if (running) abort();
+}
+
+DeviceDescription LmcDevice::describe() const {
+  DeviceDescription d;
+  d.name = "lmc " + identity_.serial;
+  d.level = DeviceLevel::commands;
+  d.field_mm = options_.field_mm;
+  d.tick_s = 10e-6;
+  d.arcs = false;
+  d.chord_tolerance_mm = options_.chord_tolerance_mm;
+  d.max_speed_mm_s = std::min(options_.max_speed_mm_s, 65535.0 * 1000.0 / units_.units_per_mm());
+  d.max_dwell_s = 0;  // long dwells are split into several commands
+  d.laser_settings = true;
+  return d;
+}
+
+std::uint16_t LmcDevice::port_bits(bool laser, bool red) const {
+  return static_cast<std::uint16_t>((laser ? 1u << options_.laser_port_bit : 0u) |
+                                    (red ? 1u << options_.red_pointer_bit : 0u));
+}
+
+void LmcDevice::require_state(DeviceState want, const char* what) const {
+  std::lock_guard lock(state_mutex_);
+  if (state_ != want)
+    throw DeviceError(std::string("lmc: ") + what + " needs the device " +
+                      std::string(to_string(want)) + ", it is " + std::string(to_string(state_)));
+}
+
+void LmcDevice::begin_job(const JobHeader& header) {
+  std::lock_guard job(job_);
+  require_state(DeviceState::idle, "begin_job");
+  if (!(header.field_mm > 0) || header.field_mm > options_.field_mm * (1 + 1e-9)) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  "lmc: job '%s' needs a %g mm field, the lens gives %g mm (allowed up to %g mm)",
+                  header.name.c_str(), header.field_mm, options_.field_mm, options_.field_mm);
+    throw DeviceError(buf);
+  }
+  if (header.pens.empty()) throw DeviceError("lmc: job '" + header.name + "' has no pen");
+  std::vector<BoardPen> pens;
+  for (std::size_t i = 0; i < header.pens.size(); ++i)
+    pens.push_back(encode_pen(header.pens[i], i, units_, options_.source));  // refusals first
+
+  header_ = header;
+  header_.lit_paths.clear();  // not needed here; do not keep a copy of the geometry
+  pens_ = std::move(pens);
+  commands_ = commands_sent_ = 0;
+  packets_ = 0;
+  list_commands_at_start_ = encoder_.figures().list_commands;
+  parameters_at_start_ = encoder_.figures().parameter_commands;
+  moves_at_start_ = encoder_.figures().moves;
+  estimate_at_start_s_ = encoder_.figures().estimated_s;
+  session_at_start_ = session_.figures();
+  first_packet_s_ = -1;
+  fault_latency_s_ = -1;
+  device_time_s_ = 0;
+  job_start_ = Clock::now();
+  {
+    std::lock_guard lock(state_mutex_);
+    state_ = DeviceState::running;
+    fault_.reset();
+  }
+  try {
+    // As meerk40t's program mode: a fresh list, the laser enable bit, the master oscillator
+    // open, then ReadyMark, the open-MO delay, the port in the list, and the first pen.
+    session_.command(word(Op::ResetList));
+    session_.command(word(Op::WritePort, port_bits(true, false)));
+    session_.command(word(Op::FiberSetMo, 1));
+    laser_on_ = true;
+    session_.begin_list();
+    encoder_.start_list(options_.open_mo_delay_s, port_bits(true, false));
+    encoder_.apply_pen(pens_[0]);
+  } catch (const Aborted&) {
+    return;
+  } catch (const std::exception& e) {
+    fail_from(e);
+  }
+}
+
+void LmcDevice::check_commands(std::span<const DeviceCommand> cs) const {
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    const DeviceCommand& c = cs[i];
+    const std::uint64_t at = commands_ + i;
+    const auto refuse = [&](FaultCategory cat, const std::string& why) {
+      throw DeviceFaultError(DeviceFault{
+          cat, "lmc: command " + std::to_string(at) + " (" + op_name(c.op) + ") refused before "
+                   "anything of it was sent: " + why, at});
+    };
+    switch (c.op) {
+      case DeviceOp::pen:
+        if (c.pen >= pens_.size())
+          refuse(FaultCategory::device, "pen " + std::to_string(c.pen) + " is not in the job's " +
+                                            std::to_string(pens_.size()) + " pens");
+        break;
+      case DeviceOp::arc:
+        refuse(FaultCategory::device, "the board takes no arcs (describe().arcs = false): chord "
+                                      "them to describe().chord_tolerance_mm");
+        break;
+      case DeviceOp::jump:
+      case DeviceOp::mark:
+        if (!units_.in_field(c.x_mm, c.y_mm)) {
+          char buf[120];
+          std::snprintf(buf, sizeof buf, " lies outside the %g mm field (|x|, |y| ≤ %g mm)",
+                        options_.field_mm, units_.half_field_mm());
+          refuse(FaultCategory::out_of_field, point_text(c.x_mm, c.y_mm) + buf);
+        }
+        if (!(c.speed_mm_s >= 0) || !std::isfinite(c.speed_mm_s))
+          refuse(FaultCategory::device, "speed " + std::to_string(c.speed_mm_s) +
+                                            " mm/s is not a speed (0 = the pen's, or > 0)");
+        break;
+      case DeviceOp::dwell:
+        if (!(c.dwell_s >= 0) || c.dwell_s > kLongestDwell_s)
+          refuse(FaultCategory::device, "dwell " + std::to_string(c.dwell_s) +
+                                            " s is outside 0 .. 3600 s");
+        break;
+    }
+  }
+}
+
+void LmcDevice::submit(std::span<const DeviceCommand> commands) {
+  std::lock_guard job(job_);
+  {
+    std::lock_guard lock(state_mutex_);
+    if (state_ == DeviceState::aborted) return;  // the caller aborted: nothing more goes out
+    if (state_ == DeviceState::failed) throw DeviceFaultError(*fault_);
+    if (state_ != DeviceState::running)
+      throw DeviceError("lmc: submit needs a running job, the device is " +
+                        std::string(to_string(state_)));
+  }
+  try {
+    check_commands(commands);
+  } catch (const DeviceFaultError& e) {
+    fail(e.fault().category, e.fault().message);
+  }
+  try {
+    // The DeviceCommand contract: a job starts at the field centre. When the mirrors are
+    // elsewhere (an earlier job) and the job begins with anything but a jump, go there first.
+    if (commands_ == 0 && !commands.empty() && commands.front().op != DeviceOp::jump &&
+        encoder_.position() != std::array<std::uint16_t, 2>{0x8000, 0x8000})
+      encoder_.add(DeviceCommand::jump_to(0, 0), 0);
+    for (std::size_t i = 0; i < commands.size(); ++i) {
+      const DeviceCommand& c = commands[i];
+      encoder_.add(c, commands_ + i);
+      if (c.op == DeviceOp::pen) encoder_.apply_pen(pens_[c.pen]);
+    }
+    commands_ += commands.size();
+    const auto p = units_.field_point(encoder_.position()[0], encoder_.position()[1]);
+    std::lock_guard lock(state_mutex_);
+    position_ = {p[0], p[1]};
+  } catch (const Aborted&) {
+    return;
+  } catch (const std::exception& e) {
+    fail_from(e);
+  }
+}
+
+void LmcDevice::send_packet(const ListPacket& packet, const PacketInfo& info) {
+  session_.send_packet(packet, info.estimated_s);
+  commands_sent_ = info.commands_complete;
+  if (packets_ == 0) first_packet_s_ = seconds(Clock::now() - job_start_);
+  ++packets_;
+  if (info.last) session_.finish_list();
+}
+
+DeviceReport LmcDevice::end_job() {
+  std::lock_guard job(job_);
+  DeviceState s;
+  {
+    std::lock_guard lock(state_mutex_);
+    s = state_;
+  }
+  if (s == DeviceState::running) {
+    try {
+      encoder_.finish(commands_);
+      session_.finish_list();
+      const auto started = session_.figures().execute_at.value_or(Clock::now());
+      session_.wait_idle();
+      device_time_s_ = seconds(Clock::now() - started);
+      // Executed in full. Close the oscillator and the laser port (meerk40t's rapid mode).
+      commands_sent_ = commands_;
+      session_.command(word(Op::FiberSetMo, 0));
+      session_.command(word(Op::WritePort, port_bits(false, false)));
+      laser_on_ = false;
+      session_.command(word(Op::GetMarkTime, 3));
+      link_->flush();
+      std::lock_guard lock(state_mutex_);
+      if (state_ == DeviceState::running) state_ = DeviceState::done;
+    } catch (const Aborted&) {
+    } catch (const DeviceFaultError&) {
+    } catch (const std::exception& e) {
+      try {
+        fail_from(e);
+      } catch (const DeviceFaultError&) {
+      }
+    }
+  }
+  collect_figures();
+  return report();
+}
+
+void LmcDevice::collect_figures() {
+  const EncoderFigures& e = encoder_.figures();
+  const SessionFigures s = session_.figures();
+  const double list_commands = double(e.list_commands - list_commands_at_start_);
+  const double packets = double(packets_);
+  DeviceFigures f = {
+      {"commands", double(commands_)},
+      {"list_commands", list_commands},
+      {"packets", packets},
+      {"list_commands_per_packet", packets > 0 ? list_commands / packets : 0},
+      {"moves", double(e.moves - moves_at_start_)},
+      {"parameter_commands", double(e.parameter_commands - parameters_at_start_)},
+      {"single_commands", double(s.single_commands - session_at_start_.single_commands)},
+      {"status_polls", double(s.status_polls - session_at_start_.status_polls)},
+      {"ready_waits", double(s.ready_waits - session_at_start_.ready_waits)},
+      {"ready_wait_s", s.ready_wait_s - session_at_start_.ready_wait_s},
+      {"estimated_time_s", e.estimated_s - estimate_at_start_s_},
+  };
+  if (first_packet_s_ >= 0) f.emplace_back("first_packet_s", first_packet_s_);
+  if (fault_latency_s_ >= 0) f.emplace_back("fault_latency_s", fault_latency_s_);
+  std::lock_guard lock(state_mutex_);
+  figures_ = std::move(f);
+}
+
+void LmcDevice::fail_from(const std::exception& e) {
+  if (const auto* le = dynamic_cast<const LinkError*>(&e))
+    fail(le->failure() == LinkFailure::timeout ? FaultCategory::timeout : FaultCategory::transport,
+         e.what());
+  if (dynamic_cast<const BoardTimeout*>(&e)) fail(FaultCategory::timeout, e.what());
+  if (const auto* fe = dynamic_cast<const DeviceFaultError*>(&e))
+    fail(fe->fault().category, fe->fault().message);
+  fail(FaultCategory::device, e.what());
+}
+
+void LmcDevice::fail(FaultCategory category, const std::string& what) {
+  const auto detected = Clock::now();
+  const SessionFigures f = session_.figures();
+  if (f.last_ok != Clock::time_point{}) fault_latency_s_ = seconds(detected - f.last_ok);
+  const std::string stopped = stop_board();
+  DeviceFault fault;
+  fault.category = category;
+  // What was and was not marked. Before ExecuteList nothing ran; after it, everything whose
+  // list commands reached the board may have been executed, and nothing after that was.
+  fault.at = session_.executing() ? commands_sent_.load() : 0;
+  std::string marked;
+  if (fault.at == 0)
+    marked = "nothing was marked (the board had not started the list)";
+  else
+    marked = "commands 0.." + std::to_string(fault.at - 1) +
+             " were sent and may have been marked; nothing from command " +
+             std::to_string(fault.at) + " on was marked";
+  fault.message = what + "; " + marked + "; " + stopped;
+  collect_figures();
+  try {
+    link_->flush();  // a capture keeps what was sent
+  } catch (...) {
+  }
+  {
+    std::lock_guard lock(state_mutex_);
+    state_ = DeviceState::failed;
+    fault_ = fault;
+  }
+  throw DeviceFaultError(fault);
+}
+
+std::string LmcDevice::stop_board() noexcept {
+  try {
+    const StopOutcome o = session_.stop(port_bits(false, false), true);
+    if (o.laser_off_confirmed) laser_on_ = false;
+    return o.laser_off_confirmed
+               ? "laser port off (confirmed by the board)"
+               : "the board could not be reached to switch the laser off" +
+                     (o.note.empty() ? std::string() : " (" + o.note + ")");
+  } catch (...) {
+    return "the stop sequence failed";
+  }
+}
+
+void LmcDevice::abort() noexcept {
+  abort_requested_.store(true, std::memory_order_release);
+  stop_board();
+  std::lock_guard lock(state_mutex_);
+  if (state_ != DeviceState::failed) state_ = DeviceState::aborted;
+}
+
+DeviceStatus LmcDevice::status() const {
+  std::lock_guard lock(state_mutex_);
+  DeviceStatus s;
+  s.state = state_;
+  s.position = position_;
+  s.laser_on = laser_on_ && state_ == DeviceState::running;
+  s.fault = fault_;
+  s.progress = commands_sent_;
+  return s;
+}
+
+void LmcDevice::reset() {
+  std::lock_guard job(job_);
+  DeviceState s;
+  std::optional<DeviceFault> f;
+  {
+    std::lock_guard lock(state_mutex_);
+    s = state_;
+    f = fault_;
+  }
+  if (s == DeviceState::running)
+    throw DeviceError("lmc: reset while a job runs: end or abort it first");
+  abort_requested_.store(false);
+  try {
+    if (f && (f->category == FaultCategory::transport || f->category == FaultCategory::timeout)) {
+      // The link failed: find the board again (it may have been replugged) and initialise it.
+      link_->reopen();
+      identity_ = session_.initialise(options_.init,
+                                      options_.correction ? &*options_.correction : nullptr);
+    }
+    // After a stop the mirrors are wherever they stopped: ask, so the next jump's length is
+    // right. (After a finished job the encoder knows where it left them.)
+    if (s == DeviceState::aborted || s == DeviceState::failed) encoder_.set_position(session_.position());
+  } catch (const std::exception& e) {
+    throw DeviceFaultError(DeviceFault{FaultCategory::transport,
+                                       "lmc: reset could not reach the board: " + std::string(e.what()),
+                                       0});
+  }
+  std::lock_guard lock(state_mutex_);
+  state_ = DeviceState::idle;
+  fault_.reset();
+}
+
+DeviceReport LmcDevice::report() const {
+  DeviceReport r;
+  std::lock_guard lock(state_mutex_);
+  r.outcome = state_;
+  r.fault = fault_;
+  // Done: everything. Failed: what the fault says. Aborted: what had been sent, if the list had
+  // started (ExecuteList), else nothing.
+  r.commands_done = state_ == DeviceState::done ? commands_
+                    : fault_                     ? fault_->at
+                    : session_.executing()       ? commands_sent_.load()
+                                                 : 0;
+  r.device_time_s = device_time_s_;
+  r.figures = figures_;
+  return r;
+}
+
+void LmcDevice::pause() {
+  require_state(DeviceState::running, "pause");
+  session_.pause();
+}
+
+void LmcDevice::resume() {
+  require_state(DeviceState::running, "resume");
+  session_.resume();
+}
+
+Vec2 LmcDevice::query_position() {
+  const auto w = session_.position();
+  const auto p = units_.field_point(w[0], w[1]);
+  return {p[0], p[1]};
+}
+
+std::uint16_t LmcDevice::query_status() { return session_.poll_status(); }
+
+void LmcDevice::set_red_pointer(bool on) {
+  std::lock_guard job(job_);
+  {
+    std::lock_guard lock(state_mutex_);
+    if (state_ == DeviceState::running) throw DeviceError("lmc: red pointer: a job is running");
+  }
+  session_.command(word(Op::WritePort, port_bits(false, on)));
+}
+
+FrameReport LmcDevice::frame(const std::vector<std::vector<Vec2>>& paths, const FrameOptions& o) {
+  std::lock_guard job(job_);
+  require_state(DeviceState::idle, "frame");
+  std::size_t points = 0;
+  for (const auto& path : paths)
+    for (const Vec2& p : path) {
+      if (!units_.in_field(p.x, p.y))
+        throw DeviceFaultError(DeviceFault{
+            FaultCategory::out_of_field,
+            "lmc: frame point " + point_text(p.x, p.y) + " lies outside the " +
+                std::to_string(options_.field_mm) + " mm field; nothing was sent", 0});
+      ++points;
+    }
+  if (points == 0) throw DeviceError("lmc: frame: nothing to trace");
+  encode_speed(o.speed_mm_s, units_, "red-pointer speed");  // refuse before sending
+
+  FrameReport report;
+  const std::uint64_t packets_before = packets_;
+  {
+    std::lock_guard lock(state_mutex_);
+    state_ = DeviceState::running;
+  }
+  try {
+    // The laser enable bit stays clear and the master oscillator closed for the whole frame.
+    session_.command(word(Op::ResetList));
+    session_.command(word(Op::FiberSetMo, 0));
+    session_.command(word(Op::WritePort, port_bits(false, true)));
+    session_.begin_list();
+    encoder_.start_list(0, port_bits(false, true));
+    std::uint64_t index = 0;
+    while (o.laps == 0 || report.laps < o.laps) {
+      for (const auto& path : paths)
+        for (const Vec2& p : path) encoder_.add(DeviceCommand::jump_to(p.x, p.y, o.speed_mm_s), index++);
+      ++report.laps;
+    }
+    encoder_.finish(index);
+    session_.finish_list();
+    session_.wait_idle();
+    session_.command(word(Op::WritePort, port_bits(false, false)));
+    link_->flush();
+    std::lock_guard lock(state_mutex_);
+    state_ = DeviceState::idle;
+  } catch (const Aborted&) {
+    report.stopped = true;  // abort() ran the stop sequence: red pointer and laser port off
+  } catch (const std::exception& e) {
+    try {
+      fail_from(e);
+    } catch (...) {
+      report.packets = packets_ - packets_before;
+      packets_ = packets_before;
+      throw;
+    }
+  }
+  report.packets = packets_ - packets_before;
+  packets_ = packets_before;
+  return report;
+}
+
+}  // namespace mark::lmc

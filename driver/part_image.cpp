@@ -126,4 +126,20 @@ CameraImage camera_view(const PartImage& part, int factor, bool invert) {
   return cam;
 }
 
+CameraImage part_picture(const DoseRaster& dose, const FieldWindow& w, const MarkResponse& response,
+                         bool dark_part, int max_side_px) {
+  const double side_px = std::max(w.x1 - w.x0, w.y1 - w.y0) / dose.pixel_mm() + 1;
+  const int factor = std::max(1, static_cast<int>(std::ceil(side_px / std::max(16, max_side_px - 1))));
+  return camera_view(PartImage::render(dose, w, response, factor), 1, dark_part);
+}
+
+bool dosed_window(const DoseRaster& dose, double margin_mm, FieldWindow& w) {
+  std::int64_t ix0 = 0, iy0 = 0, ix1 = 0, iy1 = 0;
+  if (!dose.bounds(ix0, iy0, ix1, iy1)) return false;
+  const double p = dose.pixel_mm();
+  w = {static_cast<double>(ix0) * p - margin_mm, static_cast<double>(iy0) * p - margin_mm,
+       static_cast<double>(ix1) * p + margin_mm, static_cast<double>(iy1) * p + margin_mm};
+  return true;
+}
+
 }  // namespace mark

@@ -64,4 +64,12 @@ inline constexpr std::uint8_t kBareGrey = 225, kMarkedGrey = 40;
 // marked grey (a dark part whose marks turn light, e.g. black anodised aluminium).
 CameraImage camera_view(const PartImage& part, int factor, bool invert = false);
 
+// The window's part as a camera sees it, at the raster's pixel or the smallest whole multiple
+// of it that keeps both sides within max_side_px.
+CameraImage part_picture(const DoseRaster& dose, const FieldWindow& window, const MarkResponse& response,
+                         bool dark_part = false, int max_side_px = 4096);
+
+// Everything the beam dosed (whole raster tiles), grown by margin_mm; false when nothing was.
+bool dosed_window(const DoseRaster& dose, double margin_mm, FieldWindow& window);
+
 }  // namespace mark

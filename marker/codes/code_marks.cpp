@@ -66,12 +66,11 @@ std::vector<Element> square_marks(const PlacedCode& code, FillStats& stats) {
     if (is_linear(code.matrix.symbology)) s.angle_deg += 90;
     const double turns = s.angle_deg / 90;
     if (std::abs(turns - std::round(turns)) > 1e-9) continue;
-    // Along the grid: a whole number of lines per module, each half a spacing from the edges.
+    // Along the grid: a whole number of lines per module, the outer ones half a spacing in from
+    // the module's edges (where a line of about that width burns up to the edge); the beam
+    // radius pulls in the lines' ends.
     s.spacing_mm = m / std::ceil(m / s.spacing_mm - 1e-9);
-    // An inset on a scanline would leave that line to rounding (a line along a module's bottom
-    // edge counts, along its top edge not): move the inset 0.1 µm off it.
-    const double k = o.inset_mm / s.spacing_mm - 0.5;
-    if (std::abs(k - std::round(k)) * s.spacing_mm < 1e-4) o.inset_mm = std::max(0.0, o.inset_mm - 1e-4);
+    s.inset_line_ends_only = true;
   }
   Point at = code.module_box(0, 0).min;
   Filled f = fill_contours(contours, o, at);

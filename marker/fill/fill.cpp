@@ -55,9 +55,18 @@ Filled fill_contours(const std::vector<Contour>& contours, const FillOptions& o,
   const ClipperLib::Paths hatch_area = region.inset(o.inset_mm);
   for (const HatchSet& set : o.sets) {
     const HatchFrame frame{o.origin, set.angle_deg * std::numbers::pi / 180, set.spacing_mm};
+    std::vector<HatchPiece> pieces;
+    if (set.inset_line_ends_only) {
+      for (HatchPiece p : hatch_pieces(region.area, frame, 0.0)) {
+        p.x0 += o.inset_mm;
+        p.x1 -= o.inset_mm;
+        if (p.x1 - p.x0 >= o.min_line_mm) pieces.push_back(p);
+      }
+    } else {
+      pieces = hatch_pieces(hatch_area, frame, o.min_line_mm);
+    }
     Point beam = at;
-    const std::vector<HatchLine> lines =
-        order_hatch(hatch_pieces(hatch_area, frame, o.min_line_mm), frame, o.direction, o.order, beam);
+    const std::vector<HatchLine> lines = order_hatch(pieces, frame, o.direction, o.order, beam);
     for (const HatchLine& l : lines) {
       ++result.stats.hatch_lines;
       result.stats.hatch_length_mm += (l.end - l.start).norm();

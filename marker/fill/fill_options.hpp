@@ -22,6 +22,10 @@ enum class ContourPlacement { before, after };
 struct HatchSet {
   double angle_deg = 0;      // direction of the lines, from +x counter-clockwise
   double spacing_mm = 0.05;  // distance between neighbouring lines
+  // Apply the inset along the lines only (each line's ends pulled in by it) instead of shrinking
+  // the area: for rectilinear shapes hatched along their own grid (a code's modules), whose
+  // spacing divides the grid so every line already runs half a spacing off the edges beside it.
+  bool inset_line_ends_only = false;
 };
 
 struct FillOptions {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "driver/grey_png.hpp"
 #include "fonts/error.hpp"
@@ -24,9 +25,9 @@ struct CodeArgs {
   std::string symbology;
   std::string data;
   bool escapes = false;
-  double size_mm = 0;
-  double module_mm = 0;
-  double bar_height_mm = 0;
+  std::optional<double> size_mm;
+  std::optional<double> module_mm;
+  std::optional<double> bar_height_mm;
   std::string matrix_size;
   std::string shape = "square";
   std::string qr_ecc = "M";
@@ -70,9 +71,14 @@ CodeJob make_job(const CodeArgs& a) {
   CodeLayout& l = job.layout;
   l.center = Point(a.x_mm, a.y_mm);
   l.angle_deg = a.angle_deg;
-  l.size_mm = a.size_mm;
-  l.module_mm = a.module_mm;
-  l.bar_height_mm = a.bar_height_mm;
+  // Given means given: 0 is not "automatic" on the command line.
+  if (a.size_mm) require_in_range("--size", *a.size_mm, 0.05, 500, "mm");
+  if (a.module_mm) require_in_range("--module", *a.module_mm, 0.01, 20, "mm");
+  if (a.bar_height_mm) require_in_range("--bar-height", *a.bar_height_mm, 0.1, 500, "mm");
+  if (a.size_mm && a.module_mm) throw InputError("give --size or --module, not both");
+  l.size_mm = a.size_mm.value_or(0);
+  l.module_mm = a.module_mm.value_or(0);
+  l.bar_height_mm = a.bar_height_mm.value_or(0);
   l.style = parse_module_style(a.style);
   l.dot = parse_dot_shape(a.dot);
   l.dot_share = a.dot_size;

@@ -51,6 +51,9 @@ int run_zint(const CodeSpec& spec, int size_option, int shape_option, SymbolPtr&
   }
   s.output_options = BARCODE_NO_QUIET_ZONES;
   s.show_hrt = 0;
+  // zint only warns about a GS1 check digit or date it finds wrong and encodes anyway; a part
+  // marked with a non-compliant UDI is scrap, so every warning refuses.
+  s.warn_level = WARN_FAIL_ALL;
   return ZBarcode_Encode(&s, reinterpret_cast<const unsigned char*>(spec.data.data()),
                          static_cast<int>(spec.data.size()));
 }

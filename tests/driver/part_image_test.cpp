@@ -1,0 +1,113 @@
+// The material model and the camera: a single line marks as wide as the Gaussian-beam formula
+// says at every speed (the reference width at the reference speed, nothing above the vanishing
+// speed); pixel factors keep the marked share; the camera looks from above (top row = highest
+// y) with bare and marked grey swapped for a dark part; the PNG carries its pixel size in pHYs
+// and is written whole.
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "driver/grey_png.hpp"
+#include "driver/part_image.hpp"
+
+namespace mark {
+namespace {
+
+// A horizontal line along y = 0 from x = −1 to 1 mm at the given speed (dose = time).
+DoseRaster line_dose(double speed_mm_s) {
+  DoseRaster dose(0.005);
+  dose.deposit_segment({-1, 0}, {1, 0}, 2.0 / speed_mm_s);
+  return dose;
+}
+
+// Marked width across the line at x = 0, mm.
+double marked_width(const DoseRaster& dose, const MarkResponse& r, int factor = 1) {
+  const PartImage img = PartImage::render(dose, {-0.2, -0.2, 0.2, 0.2}, r, factor);
+  const int i = static_cast<int>(std::lround((0 - img.x0_mm()) / img.pixel_mm()));
+  double marked = 0;
+  for (int j = 0; j < img.height(); ++j) marked += img.share(i, j);
+  return marked * img.pixel_mm();
+}
+
+TEST(PartImage, SingleLineWidthFollowsTheBeamFormula) {
+  const MarkResponse r;  // 50 µm beam; a 50 µm line at 1 m/s
+  EXPECT_NEAR(r.line_width_mm(1000), 0.05, 1e-12);
+  for (double v : {250.0, 500.0, 1000.0, 2000.0, 4000.0, 7000.0}) {
+    SCOPED_TRACE(v);
+    // The raster's 5 µm pixels resolve the edge to a pixel.
+    EXPECT_NEAR(marked_width(line_dose(v), r), r.line_width_mm(v), 0.0051);
+  }
+  EXPECT_NEAR(r.vanishing_speed_mm_s(), 7389, 1);
+  EXPECT_EQ(r.line_width_mm(7500), 0.0);
+  EXPECT_EQ(marked_width(line_dose(7500), r), 0.0);
+}
+
+TEST(PartImage, CoarsePixelsKeepTheMarkedShare) {
+  const MarkResponse r;
+  const DoseRaster d = line_dose(1000);
+  EXPECT_NEAR(marked_width(d, r, 4), marked_width(d, r, 1), 1e-9);
+}
+
+TEST(PartImage, CameraLooksFromAboveAndSwapsGreyForADarkPart) {
+  DoseRaster dose(0.005);
+  dose.deposit_segment({-1, 0.15}, {1, 0.15}, 0.002);  // a line near the top of the window
+  const PartImage img = PartImage::render(dose, {-0.2, -0.2, 0.2, 0.2}, MarkResponse{});
+  const CameraImage light = camera_view(img, 1);
+  const CameraImage dark = camera_view(img, 1, true);
+  const int row = static_cast<int>(std::lround((img.y0_mm() + (img.height() - 1) * img.pixel_mm() - 0.15) / img.pixel_mm()));
+  EXPECT_EQ(light.at(10, row), kMarkedGrey);
+  EXPECT_EQ(light.at(10, light.height - 1), kBareGrey);
+  EXPECT_EQ(dark.at(10, row), kBareGrey);
+  EXPECT_EQ(dark.at(10, light.height - 1), kMarkedGrey);
+}
+
+TEST(DoseRaster, CopyRectMatchesPixelByPixel) {
+  DoseRaster dose(0.005);
+  dose.deposit_segment({-0.5, -0.3}, {0.7, 0.4}, 1.0);
+  std::vector<float> out(300 * 200);
+  ASSERT_TRUE(dose.copy_rect(-150, -90, 300, 200, out.data()));
+  for (int y = 0; y < 200; ++y)
+    for (int x = 0; x < 300; ++x) ASSERT_EQ(out[static_cast<std::size_t>(y * 300 + x)], dose.pixel(x - 150, y - 90));
+  EXPECT_FALSE(dose.copy_rect(100000, 100000, 10, 10, out.data()));
+}
+
+unsigned read_phys(const std::string& path, int& w, int& h) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, f);
+  png_read_info(png, info);
+  png_uint_32 x = 0, y = 0;
+  int unit = 0;
+  png_get_pHYs(png, info, &x, &y, &unit);
+  w = static_cast<int>(png_get_image_width(png, info));
+  h = static_cast<int>(png_get_image_height(png, info));
+  png_destroy_read_struct(&png, &info, nullptr);
+  std::fclose(f);
+  EXPECT_EQ(unit, PNG_RESOLUTION_METER);
+  EXPECT_EQ(x, y);
+  return x;
+}
+
+TEST(GreyPng, CarriesThePixelSizeAndIsWrittenWhole) {
+  CameraImage img;
+  img.width = 40;
+  img.height = 30;
+  img.pixel_mm = 0.005;
+  img.grey.assign(40 * 30, 200);
+  const auto path = (std::filesystem::temp_directory_path() / "marker_grey_png_test.png").string();
+  write_grey_png(img, path);
+  int w = 0, h = 0;
+  EXPECT_EQ(read_phys(path, w, h), 200000u);  // 5 µm pixels: 200 000 per metre
+  EXPECT_EQ(w, 40);
+  EXPECT_EQ(h, 30);
+  EXPECT_FALSE(std::filesystem::exists(path + ".part"));
+  EXPECT_THROW(write_grey_png(img, "/nonexistent-dir/x.png"), std::runtime_error);
+  EXPECT_FALSE(std::filesystem::exists("/nonexistent-dir/x.png.part"));
+}
+
+}  // namespace
+}  // namespace mark

@@ -1,0 +1,118 @@
+// `marker code` end to end, in-process, and the fill options of `layout` / `preview`: JSON
+// figures with units in their keys, the dose picture with its pixel size, exit 2 when the mark
+// does not read, and one-line errors naming option, value and range, with no file left behind.
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "tests/marker/cli_runner.hpp"
+
+namespace mark {
+namespace {
+
+namespace fs = std::filesystem;
+fs::path temp_file(const std::string& name) { return test::fresh_temp_file("marker_code_cli_test", name); }
+
+TEST(CodeCli, JsonReportsTheDecodedDataAndTheFigures) {
+  const fs::path png = temp_file("gs1.png");
+  const test::CliResult r =
+      test::run_cli({"code", "gs1-datamatrix", "(01)09506000134352(17)261231(10)LOT42(21)SN0001", "--size", "5",
+                     "--json", "--dose-png", png.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["symbology"], "gs1-datamatrix");
+  EXPECT_EQ(j["data"], "(01)09506000134352(17)261231(10)LOT42(21)SN0001");
+  EXPECT_EQ(j["decoded"], true);
+  EXPECT_EQ(j["data_match"], true);
+  EXPECT_EQ(j["decoded_data"], "01095060001343521726123110LOT42\x1d" "21SN0001");
+  EXPECT_EQ(j["rows"], 22);
+  EXPECT_NEAR(j["module_um"].get<double>(), 5000.0 / 22, 1e-9);
+  EXPECT_NEAR(j["module_x_um"].get<double>(), 5000.0 / 22, 10);
+  EXPECT_EQ(j["axial_nonuniformity_grade"], "A");
+  for (const char* k : {"fill_ratio", "fill_ratio_min", "spill_ratio", "modules_wrong", "camera_px_um", "mark_time_s",
+                        "hatch_lines", "speed_mm_s", "width_mm", "quiet_zone_modules"})
+    EXPECT_TRUE(j.contains(k)) << k;
+  EXPECT_DOUBLE_EQ(j["dose_px_um"].get<double>(), 5.0);
+  ASSERT_TRUE(fs::exists(png));
+  // Readable PNG of the code's window with its pixel size.
+  std::FILE* f = std::fopen(png.c_str(), "rb");
+  png_structp p = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(p);
+  png_init_io(p, f);
+  png_read_info(p, info);
+  png_uint_32 ppm = 0, ppm_y = 0;
+  int unit = 0;
+  png_get_pHYs(p, info, &ppm, &ppm_y, &unit);
+  const double width_mm = png_get_image_width(p, info) * 1000.0 / ppm;
+  png_destroy_read_struct(&p, &info, nullptr);
+  std::fclose(f);
+  EXPECT_EQ(ppm, 200000u);
+  EXPECT_GT(width_mm, 5.0 + 2 * 5.0 / 22);  // the symbol and its quiet zone at least
+}
+
+TEST(CodeCli, TextSummaryAndExitTwoWhenTheMarkDoesNotRead) {
+  const test::CliResult ok = test::run_cli({"code", "qr", "SN 0042"});
+  ASSERT_EQ(ok.code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("read by zbar: decoded, data matches: 'SN 0042'"), std::string::npos) << ok.out;
+  const test::CliResult fast = test::run_cli({"code", "datamatrix", "SN 0042", "--speed", "8000", "--head", "SL10"});
+  EXPECT_EQ(fast.code, 2) << fast.out << fast.err;
+  EXPECT_NE(fast.out.find("NOT decoded"), std::string::npos) << fast.out;
+}
+
+TEST(CodeCli, OptionsOutsideTheirRangesAreOneLineErrors) {
+  const fs::path png = temp_file("never.png");
+  struct Bad {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  for (const Bad& b : std::vector<Bad>{
+           {{"--module", "0"}, "--module 0 mm is outside 0.01 .. 20 mm"},
+           {{"--module", "0.3", "--size", "4"}, "give --size or --module, not both"},
+           {{"--hatch-spacing", "-1"}, "--hatch-spacing -1 mm is outside 0.001 .. 10 mm"},
+           {{"--speed", "0"}, "--speed 0 mm/s is outside 1 .. "},
+           {{"--beam-diameter", "9"}, "--beam-diameter 9 mm is outside 0.001 .. 5 mm"},
+           {{"--pixels-per-module", "1"}, "--pixels-per-module 1 is outside 3 .. 20"},
+           {{"--style", "star"}, "module style 'star' is not one of square, dot, line"},
+           {{"--matrix-size", "11x11"}, "Data Matrix size 11x11 is not an ECC 200 size"},
+           {{"--x", "60"}, "the code with its quiet zone"},
+           {{"--head", "XY"}, "--head 'XY' is not one of SL10, SL14, cheap"}}) {
+    std::vector<std::string> args = {"code", "datamatrix", "SN 0042", "--dose-png", png.string()};
+    args.insert(args.end(), b.args.begin(), b.args.end());
+    const test::CliResult r = test::run_cli(args);
+    EXPECT_EQ(r.code, 1) << b.args[0];
+    EXPECT_NE(r.err.find(b.message), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(png));
+  }
+  const test::CliResult sym = test::run_cli({"code", "pdf417", "X"});
+  EXPECT_EQ(sym.err, "marker: symbology 'pdf417' is not one of datamatrix, gs1-datamatrix, qr, code128, gs1-128\n");
+}
+
+TEST(FillCli, LayoutJsonCarriesTheFillFigures) {
+  const test::CliResult r = test::run_cli({"layout", "SN 42", "--font", "DejaVuSans", "--height", "3", "--fill", "hatch",
+                                           "--hatch-angle", "0,90", "--contour-passes", "1", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("fill"));
+  EXPECT_GT(j["fill"]["hatch_lines"].get<int>(), 100);
+  EXPECT_EQ(j["fill"]["contour_loops"].get<int>(), 5);  // S, N, 2 and the 4 with its counter
+  EXPECT_GT(j["fill"]["area_mm2"].get<double>(), 1.0);
+}
+
+TEST(FillCli, SingleLineFontAndBadOptionsAreRefused) {
+  const fs::path svg = temp_file("never.svg");
+  const test::CliResult stroke = test::run_cli({"preview", "A", "--fill", "hatch", "-o", svg.string()});
+  EXPECT_EQ(stroke.code, 1);
+  EXPECT_NE(stroke.err.find("only closed outlines can be filled"), std::string::npos) << stroke.err;
+  const test::CliResult rule = test::run_cli({"preview", "A", "--font", "DejaVuSans", "--fill", "hatch", "--fill-rule", "odd",
+                                              "-o", svg.string()});
+  EXPECT_EQ(rule.err, "marker: fill rule 'odd' is not one of nonzero, evenodd\n");
+  const test::CliResult mode = test::run_cli({"preview", "A", "--font", "DejaVuSans", "--fill", "cross", "-o", svg.string()});
+  EXPECT_EQ(mode.err, "marker: --fill 'cross' is not one of none, hatch\n");
+  EXPECT_FALSE(fs::exists(svg));
+}
+
+}  // namespace
+}  // namespace mark

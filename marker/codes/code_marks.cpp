@@ -1,5 +1,6 @@
 #include "marker/codes/code_marks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -27,6 +28,23 @@ struct MarkGrid {
     return code.layout.invert ? !dark : dark;
   }
   Box box(int r, int c) const { return code.module_box(r - q_rows, c - q_cols); }
+  // The runs of marked modules along row r, left to right, each as the box it covers.
+  std::vector<Box> runs(int r) const {
+    std::vector<Box> out;
+    for (int c = 0; c < cols();) {
+      if (!marked(r, c)) {
+        ++c;
+        continue;
+      }
+      int e = c;
+      while (e < cols() && marked(r, e)) ++e;
+      Box run = box(r, c);
+      run.add(box(r, e - 1));
+      out.push_back(run);
+      c = e;
+    }
+    return out;
+  }
 };
 
 MarkGrid mark_grid(const PlacedCode& code) {
@@ -46,18 +64,7 @@ std::vector<Element> square_marks(const PlacedCode& code, FillStats& stats) {
   const MarkGrid g = mark_grid(code);
   std::vector<Contour> contours;
   for (int r = 0; r < g.rows(); ++r)
-    for (int c = 0; c < g.cols();) {
-      if (!g.marked(r, c)) {
-        ++c;
-        continue;
-      }
-      int e = c;
-      while (e < g.cols() && g.marked(r, e)) ++e;
-      Box run = g.box(r, c);
-      run.add(g.box(r, e - 1));
-      contours.push_back(rectangle_contour(run));
-      c = e;
-    }
+    for (const Box& run : g.runs(r)) contours.push_back(rectangle_contour(run));
   FillOptions o = code.layout.fill;
   o.origin = Point(0, 0);  // scanlines counted from the symbol's corner: the module grid
   const double m = code.module_mm;
@@ -138,22 +145,12 @@ std::vector<Element> line_marks(const PlacedCode& code, FillStats& stats) {
     return out;
   }
   for (int row = 0; row < g.rows(); ++row) {
-    std::vector<std::pair<Point, Point>> runs;
-    for (int c = 0; c < g.cols();) {
-      if (!g.marked(row, c)) {
-        ++c;
-        continue;
-      }
-      int e = c;
-      while (e < g.cols() && g.marked(row, e)) ++e;
-      const Box a = g.box(row, c), b = g.box(row, e - 1);
-      runs.emplace_back(Point(a.min.x(), a.center().y()), Point(b.max.x(), b.center().y()));
-      c = e;
+    std::vector<Box> runs = g.runs(row);
+    if (row % 2 == 1) std::reverse(runs.begin(), runs.end());  // serpentine rows
+    for (const Box& b : runs) {
+      const Point left(b.min.x(), b.center().y()), right(b.max.x(), b.center().y());
+      row % 2 == 0 ? add(left, right) : add(right, left);
     }
-    if (row % 2 == 0)
-      for (const auto& [a, b] : runs) add(a, b);
-    else
-      for (auto it = runs.rbegin(); it != runs.rend(); ++it) add(it->second, it->first);
   }
   return out;
 }

@@ -4,14 +4,13 @@
 // y) with bare and marked grey swapped for a dark part; the PNG carries its pixel size in pHYs
 // and is written whole.
 #include <gtest/gtest.h>
-#include <png.h>
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 
 #include "driver/grey_png.hpp"
 #include "driver/part_image.hpp"
+#include "tests/driver/png_info.hpp"
 
 namespace mark {
 namespace {
@@ -74,24 +73,6 @@ TEST(DoseRaster, CopyRectMatchesPixelByPixel) {
   EXPECT_FALSE(dose.copy_rect(100000, 100000, 10, 10, out.data()));
 }
 
-unsigned read_phys(const std::string& path, int& w, int& h) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png_create_info_struct(png);
-  png_init_io(png, f);
-  png_read_info(png, info);
-  png_uint_32 x = 0, y = 0;
-  int unit = 0;
-  png_get_pHYs(png, info, &x, &y, &unit);
-  w = static_cast<int>(png_get_image_width(png, info));
-  h = static_cast<int>(png_get_image_height(png, info));
-  png_destroy_read_struct(&png, &info, nullptr);
-  std::fclose(f);
-  EXPECT_EQ(unit, PNG_RESOLUTION_METER);
-  EXPECT_EQ(x, y);
-  return x;
-}
-
 TEST(GreyPng, CarriesThePixelSizeAndIsWrittenWhole) {
   CameraImage img;
   img.width = 40;
@@ -100,10 +81,13 @@ TEST(GreyPng, CarriesThePixelSizeAndIsWrittenWhole) {
   img.grey.assign(40 * 30, 200);
   const auto path = (std::filesystem::temp_directory_path() / "marker_grey_png_test.png").string();
   write_grey_png(img, path);
-  int w = 0, h = 0;
-  EXPECT_EQ(read_phys(path, w, h), 200000u);  // 5 µm pixels: 200 000 per metre
-  EXPECT_EQ(w, 40);
-  EXPECT_EQ(h, 30);
+  const test::PngInfo info = test::read_png_info(path);
+  ASSERT_TRUE(info.read);
+  EXPECT_EQ(info.unit, PNG_RESOLUTION_METER);
+  EXPECT_EQ(info.ppm_x, 200000u);  // 5 µm pixels: 200 000 per metre
+  EXPECT_EQ(info.ppm_y, 200000u);
+  EXPECT_EQ(info.width, 40);
+  EXPECT_EQ(info.height, 30);
   EXPECT_FALSE(std::filesystem::exists(path + ".part"));
   EXPECT_THROW(write_grey_png(img, "/nonexistent-dir/x.png"), std::runtime_error);
   EXPECT_FALSE(std::filesystem::exists("/nonexistent-dir/x.png.part"));

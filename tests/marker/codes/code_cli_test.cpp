@@ -2,11 +2,11 @@
 // figures with units in their keys, the dose picture with its pixel size, exit 2 when the mark
 // does not read, and one-line errors naming option, value and range, with no file left behind.
 #include <gtest/gtest.h>
-#include <png.h>
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "tests/driver/png_info.hpp"
 #include "tests/marker/cli_runner.hpp"
 
 namespace mark {
@@ -37,18 +37,10 @@ TEST(CodeCli, JsonReportsTheDecodedDataAndTheFigures) {
   EXPECT_DOUBLE_EQ(j["dose_px_um"].get<double>(), 5.0);
   ASSERT_TRUE(fs::exists(png));
   // Readable PNG of the code's window with its pixel size.
-  std::FILE* f = std::fopen(png.c_str(), "rb");
-  png_structp p = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png_create_info_struct(p);
-  png_init_io(p, f);
-  png_read_info(p, info);
-  png_uint_32 ppm = 0, ppm_y = 0;
-  int unit = 0;
-  png_get_pHYs(p, info, &ppm, &ppm_y, &unit);
-  const double width_mm = png_get_image_width(p, info) * 1000.0 / ppm;
-  png_destroy_read_struct(&p, &info, nullptr);
-  std::fclose(f);
-  EXPECT_EQ(ppm, 200000u);
+  const test::PngInfo info = test::read_png_info(png.string());
+  ASSERT_TRUE(info.read);
+  EXPECT_EQ(info.ppm_x, 200000u);
+  const double width_mm = info.width * 1000.0 / info.ppm_x;
   EXPECT_GT(width_mm, 5.0 + 2 * 5.0 / 22);  // the symbol and its quiet zone at least
 }
 

@@ -101,12 +101,7 @@ INSTANTIATE_TEST_SUITE_P(DejaVuSans, ContourPass, testing::Values("O", "S", "B",
                          [](const auto& info) { return std::string(info.param); });
 
 TEST(ContourPass, SquareStaysFourLinesAndCornersBecomeSharpInside) {
-  const std::vector<Contour> c = {rectangle_contour([] {
-    Box b;
-    b.add(Point(0, 0));
-    b.add(Point(4, 2));
-    return b;
-  }())};
+  const std::vector<Contour> c = {rectangle_contour(test::box(0, 0, 4, 2))};
   FillOptions o;
   o.sets.clear();
   o.contour_passes = 3;

@@ -65,12 +65,7 @@ TEST(FillFigure, SerpentineBlocksJumpFarLessThanARasterHatch) {
 }
 
 TEST(FillFigure, SerpentineAlternatesAndUnidirectionalDoesNot) {
-  const std::vector<Contour> square = {rectangle_contour([] {
-    Box b;
-    b.add(Point(0, 0));
-    b.add(Point(2, 1));
-    return b;
-  }())};
+  const std::vector<Contour> square = {rectangle_contour(test::box(0, 0, 2, 1))};
   FillOptions o;
   o.sets = {{0, 0.1}};
   o.inset_mm = 0;
@@ -93,12 +88,7 @@ TEST(FillFigure, SerpentineAlternatesAndUnidirectionalDoesNot) {
 }
 
 TEST(FillFigure, CrossHatchDrawsEachSetAtItsAngle) {
-  const std::vector<Contour> square = {rectangle_contour([] {
-    Box b;
-    b.add(Point(0, 0));
-    b.add(Point(1, 1));
-    return b;
-  }())};
+  const std::vector<Contour> square = {rectangle_contour(test::box(0, 0, 1, 1))};
   FillOptions o;
   o.sets = {{0, 0.1}, {90, 0.1}};
   o.inset_mm = 0;
@@ -154,12 +144,7 @@ TEST(FillFigure, ParametersOutsideTheirRangesAreRefused) {
 }
 
 TEST(FillFigure, AbsurdSpacingForTheSizeIsRefusedNotAttempted) {
-  const std::vector<Contour> big = {rectangle_contour([] {
-    Box b;
-    b.add(Point(-50, -50));
-    b.add(Point(50, 50));
-    return b;
-  }())};
+  const std::vector<Contour> big = {rectangle_contour(test::box(-50, -50, 50, 50))};
   FillOptions o;
   o.sets = {{0, 0.001}};
   Point at(0, 0);

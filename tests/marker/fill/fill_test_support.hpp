@@ -1,6 +1,7 @@
 #pragma once
 // Fonts and shapes the fill tests share: DejaVu Sans and Liberation Sans from Debian
 // (fonts-dejavu-core, fonts-liberation2), loaded once; one letter laid out as closed contours.
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,6 +21,13 @@ inline const StrokeFont& outline_font(const std::string& path) {
   auto& f = cache[path];
   if (!f) f = open_font(path);
   return *f;
+}
+
+inline Box box(double x0, double y0, double x1, double y1) {
+  Box b;
+  b.add(Point(x0, y0));
+  b.add(Point(x1, y1));
+  return b;
 }
 
 // The letter's contours at the given cap height, origin at (x, 0).

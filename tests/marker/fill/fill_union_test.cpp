@@ -12,16 +12,12 @@
 #include "marker/job/head_pen.hpp"
 #include "marker/job/simulate_plan.hpp"
 #include "marker/plan/plan.hpp"
+#include "tests/marker/fill/fill_test_support.hpp"
 
 namespace mark {
 namespace {
 
-Box box(double x0, double y0, double x1, double y1) {
-  Box b;
-  b.add(Point(x0, y0));
-  b.add(Point(x1, y1));
-  return b;
-}
+using test::box;
 
 // Mean dose per mm² over a window of the raster.
 double mean_dose(const DoseRaster& dose, const Box& w) {

@@ -6,7 +6,8 @@
 
 #include "driver/sim_scanner.hpp"
 #include "fonts/catalog.hpp"
-#include "marker/codes/code_job.hpp"
+#include "marker/codes/code_object.hpp"
+#include "marker/job/simulate_plan.hpp"
 #include "marker/fill/fill.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/layout/layout.hpp"
@@ -21,33 +22,27 @@ const Pen& pen() {
   return p;
 }
 
-CodeSpec dm16() {
-  CodeSpec s;
-  s.data = "SN 2026-000123";
-  s.matrix_rows = s.matrix_cols = 16;
-  return s;
-}
-
-CodeLayout dm_layout(HatchOrder order) {
-  CodeLayout l;
-  l.module_mm = 0.3;
-  l.fill.order = order;
-  if (order == HatchOrder::raster) l.fill.direction = HatchDirection::unidirectional;
-  return l;
+CodeObject dm16(double module_mm, HatchOrder order = HatchOrder::short_jumps) {
+  CodeObject c;
+  c.spec.data = "SN 2026-000123";
+  c.spec.matrix_rows = c.spec.matrix_cols = 16;
+  c.layout.module_mm = module_mm;
+  c.layout.fill.order = order;
+  if (order == HatchOrder::raster) c.layout.fill.direction = HatchDirection::unidirectional;
+  return c;
 }
 
 void BM_DataMatrix16_EncodeHatchPlan(benchmark::State& state) {
-  const CodeSpec spec = dm16();
-  const CodeLayout layout = dm_layout(HatchOrder::short_jumps);
+  const CodeObject object = dm16(0.3);
   Plan plan;
   std::size_t lines = 0;
   for (auto _ : state) {
-    const PlacedCode code = place_encoded(spec, layout);
+    const PlacedCode code = place_encoded(object);
     plan = plan_figure(code_figure(code), pen());
     lines = code.stats.hatch_lines;
     benchmark::DoNotOptimize(plan);
   }
-  const Plan naive = plan_figure(code_figure(place_encoded(spec, dm_layout(HatchOrder::raster))), pen());
+  const Plan naive = plan_figure(code_figure(place_encoded(dm16(0.3, HatchOrder::raster))), pen());
   state.counters["hatch_lines"] = static_cast<double>(lines);
   state.counters["jump_mm"] = plan.jump_length_mm;
   state.counters["naive_jump_mm"] = naive.jump_length_mm;
@@ -88,13 +83,13 @@ void BM_FilledDejaVu20_LayoutFillPlan(benchmark::State& state) {
 BENCHMARK(BM_FilledDejaVu20_LayoutFillPlan)->Unit(benchmark::kMillisecond)->Repetitions(3)->ReportAggregatesOnly(true);
 
 void BM_Verify8mmDataMatrix(benchmark::State& state) {
-  CodeJob job;
-  job.spec = dm16();
-  job.layout.module_mm = 0.5;
+  JobSpec job;
+  job.codes.push_back(dm16(0.5));
   job.pen = pen();
-  const CodeJobResult marked = run_code_job(job);
+  const SimulatedJob marked = simulate_job(job);
   for (auto _ : state) {
-    const CodeVerification v = verify_code(marked.code, job.spec, marked.scanner->dose(), job.verify);
+    const CodeVerification v =
+        verify_code(marked.job.codes.front(), job.codes.front().spec, marked.scanner->dose(), job.verify);
     if (!v.data_match) state.SkipWithError("the 8 mm code did not read");
     benchmark::DoNotOptimize(v);
   }

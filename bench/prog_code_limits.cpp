@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "marker/codes/code_job.hpp"
 #include "marker/job/head_pen.hpp"
+#include "marker/job/simulate_plan.hpp"
 
 namespace {
 
@@ -39,16 +39,18 @@ struct Trial {
 CornerStrategy corner = CornerStrategy::blanking;
 
 Trial trial(const HeadModel& head, ModuleStyle style, double module_mm, double speed_mm_s) {
-  CodeJob job;
-  job.spec.data = kData;
-  job.spec.matrix_rows = job.spec.matrix_cols = 16;
-  job.layout.module_mm = module_mm;
-  job.layout.style = style;
+  CodeObject code;
+  code.spec.data = kData;
+  code.spec.matrix_rows = code.spec.matrix_cols = 16;
+  code.layout.module_mm = module_mm;
+  code.layout.style = style;
+  JobSpec job;
+  job.codes.push_back(code);
   job.head = head;
   job.pen = pen_for_head(head, corner, speed_mm_s);
   try {
-    const CodeJobResult r = run_code_job(job);
-    const CodeVerification& v = r.verification;
+    const SimulatedJob r = simulate_job(job);
+    const CodeVerification& v = r.codes.front();
     return {0, v.data_match, v.data_match && v.modules_wrong == 0, r.mark.mark_time_s, v.fill_ratio};
   } catch (const std::exception&) {
     return {};  // a layout the style refuses (modules narrower than the beam) does not read

@@ -56,21 +56,12 @@ void write_grey_png(const CameraImage& img, const std::string& path) {
   if (img.width <= 0 || img.height <= 0 || img.grey.size() != static_cast<std::size_t>(img.width) * img.height)
     fail(path, "the image is empty");
   if (!(img.pixel_mm > 0)) fail(path, "the pixel size is not positive");
-  const std::string temp = path + ".part";
-  std::FILE* f = std::fopen(temp.c_str(), "wb");
+  std::FILE* f = std::fopen(path.c_str(), "wb");
   if (!f) fail(path, std::strerror(errno));
   std::string error = "libpng could not start";
   const bool ok = write_file(f, img, &error);
   const bool closed = std::fclose(f) == 0;
-  if (!ok || !closed) {
-    std::remove(temp.c_str());
-    fail(path, ok ? "closing failed" : error);
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    std::remove(temp.c_str());
-    fail(path, why);
-  }
+  if (!ok || !closed) fail(path, ok ? "closing failed" : error);
 }
 
 }  // namespace mark

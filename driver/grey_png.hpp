@@ -1,8 +1,8 @@
 #pragma once
 // Writes a camera image as an 8-bit greyscale PNG with its pixel size in the pHYs chunk (pixels
 // per metre), so a reader, a verifier or any scale-aware tool takes the picture at its true
-// size. libpng directly: cairo cannot write pHYs. The file is written under a temporary name and
-// renamed, so a failure never leaves half a picture.
+// size. libpng directly: cairo cannot write pHYs. Like the other picture writers it writes the
+// path it is given; the command line writes to a temporary name and renames (cli/output_file).
 #include <string>
 
 #include "driver/part_image.hpp"

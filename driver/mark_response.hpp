@@ -11,9 +11,10 @@
 namespace mark {
 
 struct MarkResponse {
-  double spot_diameter_mm = 0.05;       // 1/e² beam diameter on the part (fiber laser, F160 lens)
+  // 1/e² beam diameter on the part: a fiber laser on an F160 lens, the job files' default spot.
+  double spot_diameter_mm = 0.04;
   double reference_speed_mm_s = 1000;   // a single line at this speed ...
-  double reference_width_mm = 0.05;     // ... marks this wide
+  double reference_width_mm = 0.04;     // ... marks this wide
 
   double beam_radius_mm() const { return spot_diameter_mm / 2; }
   // Fluence threshold F_th = F(reference_width/2) at the reference speed, s/mm².

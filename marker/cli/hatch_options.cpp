@@ -8,7 +8,7 @@
 namespace mark::cli {
 
 void add_hatch_options(CLI::App& app, HatchArgs& a) {
-  app.add_option("--hatch-spacing", a.spacing_mm, "distance between hatch lines, mm; a list gives one per hatch set (default 0.05)")
+  app.add_option("--hatch-spacing", a.spacing_mm, "distance between hatch lines, mm; a list gives one per hatch set (default 0.035)")
       ->delimiter(',');
   app.add_option("--hatch-angle", a.angle_deg, "hatch direction, degrees; a list gives several hatch sets, e.g. 0,90 (default 0)")
       ->delimiter(',');

@@ -31,6 +31,6 @@ void add_hatch_options(CLI::App& app, HatchArgs& args);
 
 // The fill options; the inset (and the first contour's) default to `beam_radius_mm`. Throws
 // InputError naming the option for a value out of range or lists of different lengths.
-FillOptions to_fill_options(const HatchArgs& args, double beam_radius_mm = 0.025);
+FillOptions to_fill_options(const HatchArgs& args, double beam_radius_mm = 0.02);
 
 }  // namespace mark::cli

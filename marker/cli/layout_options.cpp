@@ -86,10 +86,10 @@ void add_fill_options(CLI::App& app, LayoutArgs& a) {
   add_hatch_options(app, a.hatch);
 }
 
-std::optional<FillOptions> to_fill(const LayoutArgs& a) {
+std::optional<FillOptions> to_fill(const LayoutArgs& a, double beam_radius_mm) {
   if (a.fill == "none") return std::nullopt;
   if (a.fill != "hatch") throw InputError("--fill '" + a.fill + "' is not one of none, hatch");
-  FillOptions o = to_fill_options(a.hatch);
+  FillOptions o = to_fill_options(a.hatch, beam_radius_mm);
   o.rule = parse_fill_rule(a.fill_rule);
   return o;
 }

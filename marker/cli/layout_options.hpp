@@ -42,8 +42,9 @@ struct LayoutArgs {
 void add_layout_options(CLI::App& app, LayoutArgs& args);
 void add_fill_options(CLI::App& app, LayoutArgs& args);
 
-// The fill to apply, or nothing for --fill none. Throws InputError naming the option.
-std::optional<FillOptions> to_fill(const LayoutArgs& args);
+// The fill to apply, or nothing for --fill none; insets default to `beam_radius_mm`. Throws
+// InputError naming the option.
+std::optional<FillOptions> to_fill(const LayoutArgs& args, double beam_radius_mm = 0.02);
 
 // LayoutOptions from the parsed arguments; throws InputError for a malformed --circle.
 LayoutOptions to_layout_options(const LayoutArgs& args);

@@ -1,9 +1,11 @@
-// `marker mark TEXT [layout options] [--device sim] [--head SL10|SL14|cheap]
-//  [--corner blanking|delays|none] [--speed MM_S] [--preview FILE.png] [--virtual-time] [--json]
-//  [--inject KIND@N] [--trace FILE.csv] [--require-quality high|good]`
+// `marker mark TEXT [layout options] [--fill hatch …] [--code SYMBOLOGY:DATA --code-…]
+//  [--device sim] [--head SL10|SL14|cheap] [--corner blanking|delays|none] [--speed MM_S]
+//  [--preview FILE.png] [--dose-png FILE.png] [--virtual-time] [--json] [--inject KIND@N]
+//  [--trace FILE.csv] [--require-quality high|good]`
 // The main job: real time by default (the drain paced at the tick, so the line memory is written
 // while it is read), quality figures against the laid-out text. Ctrl-C / SIGTERM put the laser
-// out within one drain block; the command then says where it stopped and exits 130.
+// out within one drain block; the command then says where it stopped and exits 130. Outline-font
+// text can be hatch-filled; a code marked with the text is read back off the simulated part.
 #include <unistd.h>
 
 #include <cerrno>
@@ -14,16 +16,19 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "driver/dose_png.hpp"
+#include "driver/grey_png.hpp"
 #include "driver/quality_class.hpp"
 #include "fonts/catalog.hpp"
 #include "fonts/error.hpp"
+#include "marker/cli/code_options.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/device_factory.hpp"
 #include "marker/cli/inject_option.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/output_file.hpp"
+#include "marker/codes/code_data.hpp"
+#include "marker/codes/code_json.hpp"
 #include "marker/job/auto_speed.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
@@ -49,6 +54,9 @@ struct MarkArgs {
   std::string trace;
   std::string inject;
   std::string require_quality;
+  std::string code;  // SYMBOLOGY:DATA
+  CodeArgs code_args;
+  VerifyArgs verify;
   bool virtual_time = false;
   bool json = false;
 };
@@ -60,15 +68,28 @@ JobSpec make_spec(const MarkArgs& a) {
   spec.head = *head;
   if (!(a.layout.field_mm > 0)) throw InputError("--field must be a positive size in mm");
   spec.head.field_mm = a.layout.field_mm;
-  Warnings warnings;
-  spec.font = open_font(a.layout.font, &warnings);
-  for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
   spec.text = unescape_text(a.text);
+  if (!spec.text.empty()) {
+    Warnings warnings;
+    spec.font = open_font(a.layout.font, &warnings);
+    for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
+  }
   spec.layout = to_layout_options(a.layout);
   spec.order = parse_stroke_order(a.order);
+  spec.verify = to_verify_options(a.verify);
+  const double beam_radius_mm = a.verify.beam_diameter_mm / 2;
+  spec.fill = to_fill(a.layout, beam_radius_mm);
+  if (!a.code.empty()) {
+    const std::size_t colon = a.code.find(':');
+    if (colon == std::string::npos)
+      throw InputError("--code '" + a.code + "': expected SYMBOLOGY:DATA, e.g. datamatrix:SN0042");
+    spec.codes.push_back(to_code_object(a.code.substr(0, colon), a.code.substr(colon + 1), a.code_args,
+                                        to_fill_options(a.layout.hatch, beam_radius_mm), "code-"));
+  }
   double speed_mm_s = 0;
   if (a.speed == "auto") {
-    speed_mm_s = auto_mark_speed_mm_s(layout_text(spec.text, *spec.font, spec.layout), spec.head);
+    // The whole figure: filled letters' contour arcs and a code's dots count too.
+    speed_mm_s = auto_mark_speed_mm_s(job_figure(spec), spec.head);
   } else {
     std::size_t used = 0;
     try {
@@ -141,6 +162,11 @@ nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobResult& 
   for (const auto& [name, value] : r.device.figures) figures[name] = value;
   j["device_figures"] = figures;
   if (r.quality) j["quality"] = quality_json(*r.quality);
+  if (!r.codes.empty()) {
+    j["codes"] = nlohmann::json::array();
+    for (std::size_t k = 0; k < r.codes.size(); ++k)
+      j["codes"].push_back(code_to_json(r.job.codes[k], spec.codes[k].spec, r.codes[k]));
+  }
   return j;
 }
 
@@ -158,6 +184,15 @@ void print_summary(const JobSpec& spec, const JobResult& r) {
                 std::string(to_string(classify(*r.quality))).c_str(), r.quality->max_deviation_um,
                 r.quality->rms_deviation_um, 100 * r.quality->coverage, r.quality->dose_ratio_max,
                 r.quality->overshoot_um);
+  for (std::size_t k = 0; k < r.codes.size(); ++k) {
+    const CodeVerification& v = r.codes[k];
+    const PlacedCode& c = r.job.codes[k];
+    std::printf("code %zu: %s %dx%d, module %.0f µm, read by %s: %s", k + 1,
+                std::string(to_string(c.matrix.symbology)).c_str(), c.matrix.rows, c.matrix.cols, v.module_um,
+                v.reader.c_str(), v.data_match ? "matches" : v.decoded ? "DIFFERS" : "NOT decoded");
+    if (v.decoded) std::printf(" '%s'", printable_bytes(v.decoded_data).c_str());
+    std::printf(", fill %.0f %%, %zu modules wrong\n", 100 * v.fill_ratio, v.modules_wrong);
+  }
 }
 
 // Where a job that did not finish stopped, on one line (stderr).
@@ -213,6 +248,11 @@ void require_quality(const JobSpec& spec, const std::string& name) {
   predict.virtual_time = true;
   SimScanner sim(simulator_options(spec));
   const JobResult r = run_job_simulated(spec, predict, sim);
+  for (std::size_t k = 0; k < r.codes.size(); ++k)
+    if (!r.codes[k].data_match)
+      throw InputError("--require-quality " + name + ": code " + std::to_string(k + 1) + " (" +
+                       std::string(to_string(spec.codes[k].spec.symbology)) +
+                       ") does not read back off the simulated mark; nothing was fired");
   const QualityClass got = classify(*r.quality);
   if (got >= *wanted) return;
   char msg[320];
@@ -248,17 +288,27 @@ int run_mark(const MarkArgs& a) {
   if (!a.json && isatty(STDERR_FILENO)) options.progress = progress_printer();
   const JobResult r =
       scanner ? run_job_simulated(spec, options, *scanner) : run_job(spec, options, *device);
+  std::optional<CameraImage> picture;
   if (scanner) {
     if (!a.preview.empty())
       write_file_whole(a.preview, [&](const std::string& tmp) {
         write_mark_preview(r.job.plan, scanner->dose(), tmp);
       });
-    if (!a.dose_png.empty())
-      write_file_whole(a.dose_png, [&](const std::string& tmp) { write_dose_png(scanner->dose(), tmp); });
+    if (!a.dose_png.empty()) {
+      // The part as a camera sees it; a job with an inverted code is on a dark part.
+      bool dark_part = false;
+      for (const CodeObject& c : spec.codes) dark_part = dark_part || c.layout.invert;
+      FieldWindow window;
+      if (!dosed_window(scanner->dose(), 0.2, window)) window = {-1, -1, 1, 1};
+      picture = part_picture(scanner->dose(), window, spec.verify.response, dark_part);
+      write_file_whole(a.dose_png, [&](const std::string& tmp) { write_grey_png(*picture, tmp); });
+    }
     if (!a.trace.empty()) write_trace(scanner->trace(), a.trace);
   }
   if (a.json) {
-    std::cout << to_json(a, spec, r, device->describe().name).dump() << "\n";
+    nlohmann::json j = to_json(a, spec, r, device->describe().name);
+    if (picture) j["dose_px_um"] = 1e6 / pixels_per_metre(picture->pixel_mm);
+    std::cout << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   } else {
     print_summary(spec, r);
     if (!a.preview.empty()) std::printf("wrote %s\n", a.preview.c_str());
@@ -267,6 +317,10 @@ int run_mark(const MarkArgs& a) {
     print_stop(r, spec, interrupt_flag().requested());
     return r.outcome == JobOutcome::aborted ? kExitInterrupted : 1;
   }
+  for (std::size_t k = 0; k < r.codes.size(); ++k)
+    if (!r.codes[k].data_match)
+      std::fprintf(stderr, "marker: warning: code %zu (%s) does not read back off the simulated mark\n", k + 1,
+                   std::string(to_string(spec.codes[k].spec.symbology)).c_str());
   if (r.quality && classify(*r.quality) == QualityClass::poor)
     std::fprintf(stderr,
                  "marker: warning: poor mark predicted (max deviation %.1f µm, coverage %.2f %%, "
@@ -282,8 +336,14 @@ Command make_mark_command() {
   return Command(
       [a](CLI::App& app) {
         auto* sub = app.add_subcommand("mark", "mark the text on a device (default: the simulated scanner)");
-        sub->add_option("text", a->text, "text to mark (UTF-8; \\n starts a new line)")->required();
+        sub->add_option("text", a->text, "text to mark (UTF-8; \\n starts a new line; may be \"\" with --code)")->required();
         add_layout_options(*sub, a->layout);
+        add_fill_options(*sub, a->layout);
+        sub->add_option("--code", a->code,
+                        "also mark a code: SYMBOLOGY:DATA (datamatrix, gs1-datamatrix, qr, code128, gs1-128); "
+                        "placed with the --code-… options, hatched with the --hatch-… options");
+        add_code_options(*sub, a->code_args, "code-");
+        add_verify_options(*sub, a->verify);
         sub->add_option("--device", a->device, "device: sim (the simulated scanner)")->capture_default_str();
         sub->add_option("--head", a->head, "scan head preset: SL10, SL14, cheap")->capture_default_str();
         sub->add_option("--corner", a->corner, "corner strategy: blanking, delays, none")->capture_default_str();
@@ -300,7 +360,8 @@ Command make_mark_command() {
         sub->add_option("--run-out", a->run_out_mm, "blanking run-out length, mm (default v·τ)");
         sub->add_option("--preview", a->preview,
                         "write the marked result: dose under the planned path (.png or .svg)");
-        sub->add_option("--dose-png", a->dose_png, "write the raw dose raster as a PNG");
+        sub->add_option("--dose-png", a->dose_png,
+                        "write the part as a camera sees it (PNG, pixel size in pHYs and as dose_px_um)");
         sub->add_option("--trace", a->trace,
                         "write one CSV row per sample: t_s,cmd_x_mm,cmd_y_mm,laser,beam_x_mm,beam_y_mm");
         sub->add_option("--inject", a->inject,

@@ -111,7 +111,7 @@ std::vector<Element> dot_marks(const PlacedCode& code, FillStats& stats) {
       const Point centre = g.box(r, c).center();
       if (!out.empty()) stats.jump_length_mm += (centre - out.back().end()).norm();
       if (code.layout.dot == DotShape::spiral)
-        spiral(out, centre, radius, code.layout.fill.sets.empty() ? 0.05 : code.layout.fill.sets.front().spacing_mm);
+        spiral(out, centre, radius, code.layout.fill.sets.empty() ? HatchSet{}.spacing_mm : code.layout.fill.sets.front().spacing_mm);
       else
         append(out, Element::arc(centre, radius, 0, 2 * kPi));
     }

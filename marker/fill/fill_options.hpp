@@ -21,7 +21,9 @@ enum class ContourPlacement { before, after };
 
 struct HatchSet {
   double angle_deg = 0;      // direction of the lines, from +x counter-clockwise
-  double spacing_mm = 0.05;  // distance between neighbouring lines
+  // Distance between neighbouring lines: a little under the default 40 µm line, so the lines
+  // of a hatch overlap into a solid fill.
+  double spacing_mm = 0.035;
   // Apply the inset along the lines only (each line's ends pulled in by it) instead of shrinking
   // the area: for rectilinear shapes hatched along their own grid (a code's modules), whose
   // spacing divides the grid so every line already runs half a spacing off the edges beside it.
@@ -33,14 +35,14 @@ struct FillOptions {
   std::vector<HatchSet> sets{HatchSet{}};
   HatchDirection direction = HatchDirection::bidirectional;
   HatchOrder order = HatchOrder::short_jumps;
-  double inset_mm = 0.025;     // hatch lines end this far inside the contour
+  double inset_mm = 0.02;      // hatch lines end this far inside the contour (the default beam radius)
   // Scanlines lie at origin + (k + ½)·spacing across the hatch direction, in the field frame,
   // so neighbouring shapes filled apart still get collinear lines.
   Point origin{0, 0};
   int contour_passes = 0;      // loops along the outline (0: hatch only)
   ContourPlacement contour_placement = ContourPlacement::before;
-  double contour_inset_mm = 0.025;    // the first loop's distance inside the outline
-  double contour_spacing_mm = 0.05;   // between loops
+  double contour_inset_mm = 0.02;     // the first loop's distance inside the outline
+  double contour_spacing_mm = 0.035;  // between loops
   double min_line_mm = 0.001;  // hatch pieces shorter than this are dropped (a rounding sliver)
   // Arcs are flattened within this for the booleans; contour passes are re-fitted to the exact
   // lines and arcs afterwards.

@@ -26,7 +26,7 @@ struct HatchPiece {
 struct HatchFrame {
   Point origin{0, 0};
   double angle_rad = 0;
-  double spacing_mm = 0.05;
+  double spacing_mm = 0.035;
 
   Point to_field(double x, double y) const;
   Point to_frame(const Point& field) const;

@@ -3,10 +3,12 @@
 #include <algorithm>
 
 #include "fonts/error.hpp"
+#include "marker/fill/fill.hpp"
 #include "marker/job/device_program.hpp"
 #include "marker/job/intended_strokes.hpp"
 #include "marker/job/job_checks.hpp"
 #include "marker/job/job_run.hpp"
+#include "marker/job/simulate_plan.hpp"
 #include "marker/locus/locus_generator.hpp"
 
 namespace mark {
@@ -24,15 +26,31 @@ double seconds_since(JobClock::time_point t0) {
   return std::chrono::duration<double>(JobClock::now() - t0).count();
 }
 
+Figure job_figure(const JobSpec& spec, std::vector<PlacedCode>* codes) {
+  if (spec.text.empty() && spec.codes.empty()) throw InputError("the text to mark is empty");
+  const Field field{spec.head.field_mm};
+  Figure figure;
+  if (!spec.text.empty()) {
+    if (!spec.font) throw InputError("no font given for the text to mark");
+    figure = layout_text(spec.text, *spec.font, spec.layout);
+    // The letters themselves first, so the message says which part leaves the field.
+    if (!figure.bounds().empty()) require_inside(figure.bounds(), field, "the text layout");
+    if (spec.fill) figure = fill_figure(figure, *spec.fill);
+  }
+  for (std::size_t k = 0; k < spec.codes.size(); ++k) {
+    PlacedCode code = place_encoded(spec.codes[k]);
+    // The quiet zone belongs to the code: it must fit in the field too.
+    require_inside(code.bounds, field, "code " + std::to_string(k + 1) + " with its quiet zone");
+    for (PlacedGlyph& g : code_figure(code).glyphs) figure.glyphs.push_back(std::move(g));
+    if (codes) codes->push_back(std::move(code));
+  }
+  return figure;
+}
+
 CompiledJob compile_job(const JobSpec& spec, DeviceLevel level) {
-  if (spec.text.empty()) throw InputError("the text to mark is empty");
-  if (!spec.font) throw InputError("no font given for the text to mark");
   check_pen(spec.pen, spec.head);
   CompiledJob job;
-  job.figure = layout_text(spec.text, *spec.font, spec.layout);
-  // The letters themselves first, so the message says which part leaves the field.
-  if (!job.figure.bounds().empty())
-    require_inside(job.figure.bounds(), Field{spec.head.field_mm}, "the text layout");
+  job.figure = job_figure(spec, &job.codes);
   job.plan = level == DeviceLevel::commands ? plan_for_device(job.figure, spec.pen, spec.order)
                                             : plan_figure(job.figure, spec.pen, spec.order);
   check_plan(job.plan, spec.head);
@@ -92,13 +110,14 @@ JobHeader job_header(const JobSpec& spec, const CompiledJob& job, const DeviceDe
   return h;
 }
 
-SimScannerOptions simulator_options(const JobSpec& spec) {
-  SimScannerOptions o;
-  o.head = spec.head;
-  o.tick_s = spec.pen.tick_s;
-  o.record_lit_paths = true;
-  return o;
+std::vector<CodeVerification> verify_codes(const JobSpec& spec, const CompiledJob& job, const DoseRaster& dose) {
+  std::vector<CodeVerification> out;
+  for (std::size_t k = 0; k < job.codes.size(); ++k)
+    out.push_back(verify_code(job.codes[k], spec.codes[k].spec, dose, spec.verify));
+  return out;
 }
+
+SimScannerOptions simulator_options(const JobSpec& spec) { return simulator_options(spec.head, spec.pen); }
 
 JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,
                             const QualityReference* reference) {
@@ -106,6 +125,7 @@ JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimS
   result.quality = reference ? reference->evaluate(scanner.lit_paths(), scanner.dose())
                              : evaluate_quality(intended_polylines(result.job.figure),
                                                 scanner.lit_paths(), scanner.dose());
+  result.codes = verify_codes(spec, result.job, scanner.dose());
   return result;
 }
 

@@ -4,6 +4,7 @@
 
 #include "fonts/catalog.hpp"
 #include "fonts/error.hpp"
+#include "marker/codes/code_data.hpp"
 #include "marker/vars/render.hpp"
 
 namespace mark {
@@ -13,8 +14,7 @@ std::map<std::string, std::string> job_variables(const JobFile& job,
   std::map<std::string, std::string> values = job.variables;
   std::vector<std::string> used;
   for (const JobObject& o : job.objects)
-    if (const TextObject* t = o.text())
-      for (const std::string& v : t->text.variables()) used.push_back(v);
+    for (const std::string& v : o.text_template().variables()) used.push_back(v);
   for (const auto& [name, value] : sets) {
     if (std::find(used.begin(), used.end(), name) == used.end())
       throw InputError("--set " + name + "=…: no template of " + job.source + " uses {var:" + name + "}");
@@ -35,8 +35,7 @@ std::vector<ObjectText> render_objects(const JobFile& job,
   v.counters = &job.counters;
   v.serials = &serials;
   std::vector<ObjectText> texts;
-  for (const JobObject& o : job.objects)
-    if (const TextObject* t = o.text()) texts.push_back({o.name, render(t->text, v)});
+  for (const JobObject& o : job.objects) texts.push_back({o.name, render(o.text_template(), v)});
   return texts;
 }
 
@@ -56,15 +55,24 @@ JobFonts::JobFonts(const JobFile& job, std::vector<std::string>* warnings) {
 
 JobSpec object_spec(const JobFile& job, const JobObject& object, const std::string& text,
                     const JobFonts& fonts) {
-  const TextObject& t = *object.text();
   const JobPen& pen = job.pens.at(object.pen);
   JobSpec spec;
-  spec.text = text;
-  spec.font = fonts.font(t.font);
-  spec.layout = t.layout;
   spec.head = job.head;
   spec.pen = pen.motion;
-  spec.order = t.order;
+  // The job's spot is the beam the codes are read back with (and a line of its width at 1 m/s).
+  spec.verify.response.spot_diameter_mm = spec.verify.response.reference_width_mm = job.spot_diameter_um / 1000;
+  if (const TextObject* t = object.text()) {
+    spec.text = text;
+    spec.font = fonts.font(t->font);
+    spec.layout = t->layout;
+    spec.order = t->order;
+    spec.fill = t->fill;
+  } else {
+    const CodeJobObject& c = *object.code();
+    CodeObject code = c.code;
+    code.spec.data = c.escapes ? unescape_code_data(text) : text;
+    spec.codes.push_back(std::move(code));
+  }
   return spec;
 }
 

@@ -36,4 +36,13 @@ SimScannerOptions simulator_options(const HeadModel& head, const Pen& pen) {
   return o;
 }
 
+SimulatedJob simulate_job(const JobSpec& spec) {
+  SimulatedJob r;
+  r.job = compile_job(spec);
+  r.scanner = std::make_unique<SimScanner>(simulator_options(spec.head, spec.pen));
+  r.mark = simulate_plan(r.job.plan, *r.scanner);
+  r.codes = verify_codes(spec, r.job, r.scanner->dose());
+  return r;
+}
+
 }  // namespace mark

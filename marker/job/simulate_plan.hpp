@@ -5,8 +5,11 @@
 // job runner; only the wall-clock pacing is left out, which is what verification and speed
 // searches want.
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 #include "driver/sim_scanner.hpp"
+#include "marker/job/job.hpp"
 #include "marker/plan/plan.hpp"
 
 namespace mark {
@@ -22,5 +25,16 @@ SimulatedMark simulate_plan(const Plan& plan, SimScanner& scanner);
 
 // The scanner for a plan on a head: the pen's tick, lit paths recorded.
 SimScannerOptions simulator_options(const HeadModel& head, const Pen& pen);
+
+struct SimulatedJob {
+  CompiledJob job;
+  std::unique_ptr<SimScanner> scanner;  // keeps the dose, for pictures and further figures
+  SimulatedMark mark;
+  std::vector<CodeVerification> codes;  // each code read back off the mark
+};
+
+// compile_job, then the plan on a fresh simulated scanner in device time, then every code read
+// back. Throws what compile_job throws (before anything is marked).
+SimulatedJob simulate_job(const JobSpec& spec);
 
 }  // namespace mark

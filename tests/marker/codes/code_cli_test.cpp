@@ -68,7 +68,7 @@ TEST(CodeCli, OptionsOutsideTheirRangesAreOneLineErrors) {
            {{"--pixels-per-module", "1"}, "--pixels-per-module 1 is outside 3 .. 20"},
            {{"--style", "star"}, "module style 'star' is not one of square, dot, line"},
            {{"--matrix-size", "11x11"}, "Data Matrix size 11x11 is not an ECC 200 size"},
-           {{"--x", "60"}, "the code with its quiet zone"},
+           {{"--x", "60"}, "code 1 with its quiet zone leaves the field"},
            {{"--head", "XY"}, "--head 'XY' is not one of SL10, SL14, cheap"}}) {
     std::vector<std::string> args = {"code", "datamatrix", "SN 0042", "--dose-png", png.string()};
     args.insert(args.end(), b.args.begin(), b.args.end());

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "marker/codes/code_data.hpp"
-#include "marker/codes/code_job.hpp"
 #include "marker/job/head_pen.hpp"
+#include "marker/job/simulate_plan.hpp"
 
 namespace mark {
 namespace {
@@ -26,24 +26,33 @@ struct Case {
   int rows = 0, cols = 0;
 };
 
-CodeJobResult run(const Case& c) {
-  CodeJob job;
-  job.spec.symbology = c.symbology;
-  job.spec.data = c.data;
-  job.spec.matrix_rows = c.rows;
-  job.spec.matrix_cols = c.cols;
-  job.layout.module_mm = c.module_mm;
-  job.layout.style = c.style;
-  job.layout.angle_deg = c.angle_deg;
-  job.layout.invert = c.invert;
-  job.layout.center = Point(3, -2);
-  job.head = c.head;
-  job.pen = pen_for_head(c.head, CornerStrategy::blanking, c.speed_mm_s);
-  return run_code_job(job);
+struct Marked {
+  PlacedCode code;
+  CodeVerification verification;
+};
+
+// The code alone as a job, marked on the simulated head in device time and read back.
+Marked run(const Case& c) {
+  CodeObject code;
+  code.spec.symbology = c.symbology;
+  code.spec.data = c.data;
+  code.spec.matrix_rows = c.rows;
+  code.spec.matrix_cols = c.cols;
+  code.layout.module_mm = c.module_mm;
+  code.layout.style = c.style;
+  code.layout.angle_deg = c.angle_deg;
+  code.layout.invert = c.invert;
+  code.layout.center = Point(3, -2);
+  JobSpec spec;
+  spec.codes.push_back(code);
+  spec.head = c.head;
+  spec.pen = pen_for_head(c.head, CornerStrategy::blanking, c.speed_mm_s);
+  SimulatedJob r = simulate_job(spec);
+  return {r.job.codes.front(), r.codes.front()};
 }
 
 void expect_reads(const Case& c) {
-  const CodeJobResult r = run(c);
+  const Marked r = run(c);
   const CodeVerification& v = r.verification;
   EXPECT_TRUE(v.decoded) << c.name;
   EXPECT_TRUE(v.data_match) << c.name << ": read '" << printable_bytes(v.decoded_data) << "', meant '"
@@ -101,8 +110,9 @@ INSTANTIATE_TEST_SUITE_P(Codes, DataMatrixSizes,
                          });
 
 // Styles at settings where each is meant to be used: hatched squares at marking speed; dots slow
-// enough that the head's lag does not shrink their circles; lines for modules of about one
-// line width.
+// enough that the head's lag does not shrink their circles (ZBar reads dotted QR only from
+// 100 mm/s down: at 150 mm/s on SL14 it misses with every module right); lines for modules of
+// about one line width (0.05 mm at 200 mm/s, where a line marks 54 µm wide).
 class StylesAndHeads : public testing::TestWithParam<Case> {};
 TEST_P(StylesAndHeads, Decode) { expect_reads(GetParam()); }
 std::vector<Case> style_cases() {
@@ -111,8 +121,8 @@ std::vector<Case> style_cases() {
     for (Symbology s : {Symbology::datamatrix, Symbology::qr}) {
       const std::string base = head.name + "_" + std::string(s == Symbology::qr ? "qr" : "dm");
       out.push_back({base + "_square", s, "SN 2026-000123", 0.3, ModuleStyle::square, 1000, head});
-      out.push_back({base + "_dot", s, "SN 2026-000123", 0.3, ModuleStyle::dot, 150, head});
-      out.push_back({base + "_line", s, "SN 2026-000123", 0.06, ModuleStyle::line, 200, head});
+      out.push_back({base + "_dot", s, "SN 2026-000123", 0.3, ModuleStyle::dot, 100, head});
+      out.push_back({base + "_line", s, "SN 2026-000123", 0.05, ModuleStyle::line, 200, head});
     }
   return out;
 }
@@ -133,18 +143,19 @@ TEST(CodeDecode, DotsTooFastForTheHeadDoNotRead) {
   // At 1 m/s a 0.25 mm dot's circle turns at ω = v/r = 8000 rad/s: on SL14 (τ = 0.21 ms) the
   // first-order lag shrinks it to 1/√(1 + (ωτ)²) ≈ 51 % of its radius.
   Case c{"fast_dots", Symbology::datamatrix, "SN 2026-000123", 0.3, ModuleStyle::dot, 1000, head_sl14()};
-  const CodeJobResult fast = run(c);
-  c.speed_mm_s = 150;
-  const CodeJobResult slow = run(c);
+  const Marked fast = run(c);
+  c.speed_mm_s = 100;
+  const Marked slow = run(c);
   EXPECT_FALSE(fast.verification.decoded);
   EXPECT_TRUE(slow.verification.data_match);
   EXPECT_LT(fast.verification.fill_ratio, 0.6 * slow.verification.fill_ratio);
 }
 
 TEST(CodeDecode, LinesFasterThanTheMaterialMarksLeaveNothingToRead) {
-  // The default material marks a 50 µm line at 1 m/s; above ≈ 7.4 m/s a line does not mark.
+  // The default material marks a 40 µm line (one spot diameter) at 1 m/s; above e² m/s ≈ 7.4 m/s
+  // a line does not mark.
   Case c{"too_fast", Symbology::datamatrix, "SN 0042", 0.3, ModuleStyle::square, 8000};
-  const CodeJobResult r = run(c);
+  const Marked r = run(c);
   EXPECT_FALSE(r.verification.decoded);
   EXPECT_LT(r.verification.fill_ratio, 0.01);
 }

@@ -53,11 +53,12 @@ TEST(CodeMarks, SquareModulesAreHatchedInsideTheDarkModulesOnly) {
   l.angle_deg = 30;
   const PlacedCode c = place_code(m, l);
   EXPECT_EQ(check_marks_in_place(c).size(), m.dark_count());
-  // 0.3 mm modules at 0.05 mm spacing: six lines through every module row of every run.
+  // 0.3 mm modules at the default 0.035 mm spacing: fitted to 0.3 / 9, nine lines through every
+  // module row of every run.
   std::size_t runs = 0;
   for (int r = 0; r < m.rows; ++r)
     for (int col = 0; col < m.cols; ++col) runs += m.dark(r, col) && (col == 0 || !m.dark(r, col - 1));
-  EXPECT_EQ(c.stats.hatch_lines, 6 * runs);
+  EXPECT_EQ(c.stats.hatch_lines, 9 * runs);
   // Lines end a beam radius inside their run: total length = Σ (run length − 2 r) per line.
   double expected = 0;
   for (int r = 0; r < m.rows; ++r)
@@ -68,7 +69,7 @@ TEST(CodeMarks, SquareModulesAreHatchedInsideTheDarkModulesOnly) {
       }
       int e = col;
       while (e < m.cols && m.dark(r, e)) ++e;
-      expected += 6 * ((e - col) * 0.3 - 2 * 0.025);
+      expected += 9 * ((e - col) * 0.3 - 2 * 0.02);
       col = e;
     }
   EXPECT_NEAR(c.stats.hatch_length_mm, expected, 1e-9);
@@ -113,7 +114,7 @@ TEST(CodeMarks, DotsAreExactArcsAndSpiralsFillTheirDisc) {
   for (const Element& e : circles.elements)
     if (e.laser()) {
       ASSERT_EQ(e.kind(), ElementKind::arc);
-      EXPECT_NEAR(std::get<CircularArc>(e.geometry()).radius, 0.2 - 0.025, 1e-12);
+      EXPECT_NEAR(std::get<CircularArc>(e.geometry()).radius, 0.2 - 0.02, 1e-12);
       ++n;
     }
   EXPECT_EQ(n, m.dark_count());
@@ -121,8 +122,9 @@ TEST(CodeMarks, DotsAreExactArcsAndSpiralsFillTheirDisc) {
   l.dot = DotShape::spiral;
   const PlacedCode spirals = place_code(m, l);
   check_marks_in_place(spirals);
-  // Per dot: radius 0.175 at pitch ≤ 0.05 → k = 8 half turns: 7 semicircles and the circle.
-  EXPECT_EQ(spirals.stats.hatch_lines, 8 * m.dark_count());
+  // Per dot: radius 0.18 at pitch ≤ 0.035 → k = 2·⌈0.18 / 0.035⌉ = 12 half turns: 11
+  // semicircles and the circle.
+  EXPECT_EQ(spirals.stats.hatch_lines, 12 * m.dark_count());
   for (std::size_t k = 1; k < spirals.elements.size(); ++k)
     EXPECT_LT((spirals.elements[k].start() - spirals.elements[k - 1].end()).norm(), 1e-9);
 }
@@ -130,7 +132,7 @@ TEST(CodeMarks, DotsAreExactArcsAndSpiralsFillTheirDisc) {
 TEST(CodeMarks, LineStyleDrawsOneLinePerRunOfEachRow) {
   const ModuleMatrix m = encoded(Symbology::datamatrix, "SN 0042");
   CodeLayout l;
-  l.module_mm = 0.06;
+  l.module_mm = 0.05;
   l.style = ModuleStyle::line;
   const PlacedCode c = place_code(m, l);
   std::size_t runs = 0;
@@ -151,7 +153,7 @@ TEST(CodeMarks, ImpossibleLayoutsAreRefused) {
     return std::string();
   };
   CodeLayout l;
-  l.module_mm = 0.04;  // narrower than the 50 µm beam
+  l.module_mm = 0.04;  // no wider than the 40 µm beam
   EXPECT_NE(error(l).find("square modules would vanish"), std::string::npos);
   l.style = ModuleStyle::dot;
   EXPECT_NE(error(l).find("too small for dots"), std::string::npos);

@@ -45,7 +45,7 @@ TEST(FillFigure, GlyphsKeepTheirOrderAndHatchLinesAreLitStrokes) {
   // Lines of both glyphs at the same heights: the scanlines are fixed in the field frame.
   EXPECT_NEAR(std::fmod(filled.glyphs[0].elements[0].start().y() / 0.05 + 1000, 1.0), 0.5, 1e-6);
   EXPECT_NEAR(std::fmod(filled.glyphs[1].elements[0].start().y() / 0.05 + 1000, 1.0), 0.5, 1e-6);
-  // The hatched area covers the letters (inset 25 µm: a band of perimeter × 0.025 is left out).
+  // The hatched area covers the letters (inset 20 µm: a band of perimeter × 0.02 is left out).
   EXPECT_NEAR(stats.hatch_length_mm * 0.05 / stats.area_mm2, 0.9, 0.08);
 }
 

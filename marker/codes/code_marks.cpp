@@ -201,6 +201,27 @@ Box PlacedCode::module_box(int row, int col) const {
   return b;
 }
 
+bool PlacedCode::keeps_clear(const Point& field) const {
+  const Point p = to_field.inverse() * field;
+  const double q = quiet_modules * module_mm, qy = is_linear(matrix.symbology) ? 0 : q;
+  constexpr double kEdge = 1e-9;  // a mark touching the zone's edge is outside it
+  return p.x() > -q + kEdge && p.x() < width_mm + q - kEdge && p.y() > -qy + kEdge && p.y() < height_mm + qy - kEdge;
+}
+
+std::optional<Point> PlacedCode::first_intrusion(const std::vector<Element>& elements) const {
+  for (const Element& e : elements) {
+    if (!e.laser()) continue;
+    const Box b = e.bounds();
+    if (b.max.x() < bounds.min.x() || b.min.x() > bounds.max.x() || b.max.y() < bounds.min.y() ||
+        b.min.y() > bounds.max.y())
+      continue;
+    const int n = std::max(2, static_cast<int>(std::ceil(e.length() / 0.05)));
+    for (int k = 0; k <= n; ++k)
+      if (const Point p = e.point_at(static_cast<double>(k) / n); keeps_clear(p)) return p;
+  }
+  return std::nullopt;
+}
+
 PlacedCode place_code(const ModuleMatrix& matrix, const CodeLayout& layout) {
   check_layout(layout, matrix);
   PlacedCode code;

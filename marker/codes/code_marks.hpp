@@ -8,6 +8,7 @@
 // Every mark ends a beam radius (the fill inset) inside its module, so the burnt area, not the
 // beam's centre line, has the module's size. The quiet zone is kept clear (and is marked, with
 // the light modules, when the code is inverted for a part whose marks turn light).
+#include <optional>
 #include <vector>
 
 #include "fonts/element.hpp"
@@ -61,6 +62,11 @@ struct PlacedCode {
   // Rectangle of module (row, col) in the code frame (row 0 at the top; negative or beyond the
   // symbol for quiet-zone modules).
   Box module_box(int row, int col) const;
+  // Does a field point lie on the symbol or in its quiet zone (other marks must stay out)?
+  bool keeps_clear(const Point& field) const;
+  // The first point of the lit elements (sampled every 0.05 mm) that falls on the symbol or its
+  // quiet zone, if any.
+  std::optional<Point> first_intrusion(const std::vector<Element>& elements) const;
 };
 
 // Throws InputError for a layout outside its ranges, or modules too small for the beam and style.

@@ -43,7 +43,10 @@ struct FillOptions {
   ContourPlacement contour_placement = ContourPlacement::before;
   double contour_inset_mm = 0.02;     // the first loop's distance inside the outline
   double contour_spacing_mm = 0.035;  // between loops
-  double min_line_mm = 0.001;  // hatch pieces shorter than this are dropped (a rounding sliver)
+  // Hatch pieces shorter than this are dropped: where a scanline grazes a curve it leaves a piece
+  // of a few µm whose burn is the beam's spot alone, and which the locus, one tick of 10 µs
+  // (10 µm at 1 m/s) at least, would overdose many times over.
+  double min_line_mm = 0.01;
   // Arcs are flattened within this for the booleans; contour passes are re-fitted to the exact
   // lines and arcs afterwards.
   double chord_tolerance_mm = 0.0005;

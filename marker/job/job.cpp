@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "fonts/error.hpp"
+#include "fonts/stroke_font.hpp"
 #include "marker/fill/fill.hpp"
 #include "marker/job/device_program.hpp"
 #include "marker/job/intended_strokes.hpp"
@@ -37,13 +38,28 @@ Figure job_figure(const JobSpec& spec, std::vector<PlacedCode>* codes) {
     if (!figure.bounds().empty()) require_inside(figure.bounds(), field, "the text layout");
     if (spec.fill) figure = fill_figure(figure, *spec.fill);
   }
+  std::vector<PlacedCode> placed;
   for (std::size_t k = 0; k < spec.codes.size(); ++k) {
     PlacedCode code = place_encoded(spec.codes[k]);
-    // The quiet zone belongs to the code: it must fit in the field too.
-    require_inside(code.bounds, field, "code " + std::to_string(k + 1) + " with its quiet zone");
+    const std::string name = "code " + std::to_string(k + 1);
+    // The quiet zone belongs to the code: it must fit in the field, and nothing else may be
+    // marked in it (a reader needs it bare), nor may the code be marked over an earlier one.
+    require_inside(code.bounds, field, name + " with its quiet zone");
+    for (const PlacedGlyph& g : figure.glyphs)
+      if (const auto p = code.first_intrusion(g.elements))
+        throw InputError(name + ": its quiet zone is marked by " +
+                         (g.code_point ? "the text (glyph " + describe_code_point(g.code_point) + ")"
+                                       : std::string("an earlier code")) +
+                         " at (" + std::to_string(p->x()) + ", " + std::to_string(p->y()) +
+                         ") mm; move the code or the text apart");
+    for (std::size_t e = 0; e < placed.size(); ++e)
+      if (placed[e].first_intrusion(code.elements))
+        throw InputError(name + " is marked in the quiet zone of code " + std::to_string(e + 1) +
+                         "; move them apart");
     for (PlacedGlyph& g : code_figure(code).glyphs) figure.glyphs.push_back(std::move(g));
-    if (codes) codes->push_back(std::move(code));
+    placed.push_back(std::move(code));
   }
+  if (codes) *codes = std::move(placed);
   return figure;
 }
 

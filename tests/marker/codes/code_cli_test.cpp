@@ -108,3 +108,56 @@ TEST(FillCli, SingleLineFontAndBadOptionsAreRefused) {
 
 }  // namespace
 }  // namespace mark
+
+namespace mark {
+namespace {
+
+TEST(MarkCodeCli, FilledTextWithAUdiCodeReadsBackAndReportsTheCode) {
+  const fs::path png = test::fresh_temp_file("marker_code_cli_test", "mark.png");
+  const test::CliResult r = test::run_cli(
+      {"mark", "SN 000042", "--font", "DejaVuSans", "--height", "3", "--fill", "hatch", "--code",
+       "gs1-datamatrix:(01)09506000134352(21)000042", "--code-x", "26", "--code-y", "1.5", "--code-module",
+       "0.3", "--virtual-time", "--json", "--dose-png", png.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["outcome"], "done");
+  EXPECT_EQ(j["quality"]["class"], "high");
+  ASSERT_EQ(j["codes"].size(), 1u);
+  const auto& c = j["codes"][0];
+  EXPECT_EQ(c["symbology"], "gs1-datamatrix");
+  EXPECT_EQ(c["decoded"], true);
+  EXPECT_EQ(c["data_match"], true);
+  EXPECT_EQ(c["decoded_data"], "0109506000134352" "21000042");
+  EXPECT_DOUBLE_EQ(c["module_um"].get<double>(), 300);
+  EXPECT_GT(c["fill_ratio"].get<double>(), 0.8);
+  const test::PngInfo info = test::read_png_info(png.string());
+  ASSERT_TRUE(info.read);
+  EXPECT_NEAR(1e6 / info.ppm_x, j["dose_px_um"].get<double>(), 1e-9);
+  // Text and code both in the picture: wider than the code's 26 mm centre.
+  EXPECT_GT(info.width * j["dose_px_um"].get<double>() / 1000, 28.0);
+}
+
+TEST(MarkCodeCli, ACodeAloneAndTheRefusals) {
+  const test::CliResult alone = test::run_cli({"mark", "", "--code", "qr:HELLO", "--virtual-time", "--json"});
+  ASSERT_EQ(alone.code, 0) << alone.err;
+  EXPECT_EQ(nlohmann::json::parse(alone.out)["codes"][0]["data_match"], true);
+  const test::CliResult overlap = test::run_cli({"mark", "SN 000042", "--font", "DejaVuSans", "--height", "3", "--code",
+                                                 "datamatrix:SN000042", "--code-x", "12", "--virtual-time"});
+  EXPECT_EQ(overlap.code, 1);
+  EXPECT_NE(overlap.err.find("code 1: its quiet zone is marked by the text"), std::string::npos) << overlap.err;
+  const test::CliResult bad = test::run_cli({"mark", "X", "--code", "datamatrix", "--virtual-time"});
+  EXPECT_EQ(bad.err, "marker: --code 'datamatrix': expected SYMBOLOGY:DATA, e.g. datamatrix:SN0042\n");
+  const test::CliResult module = test::run_cli({"mark", "X", "--code", "qr:A", "--code-module", "0", "--virtual-time"});
+  EXPECT_EQ(module.err, "marker: --code-module 0 mm is outside 0.01 .. 20 mm\n");
+  const test::CliResult empty = test::run_cli({"mark", "", "--virtual-time"});
+  EXPECT_EQ(empty.err, "marker: the text to mark is empty\n");
+  // A code that the simulator says will not read is refused before firing when asked.
+  const test::CliResult unreadable = test::run_cli({"mark", "", "--code", "datamatrix:SN1", "--speed", "8000",
+                                                    "--require-quality", "good", "--virtual-time"});
+  EXPECT_EQ(unreadable.code, 1);
+  EXPECT_NE(unreadable.err.find("does not read back off the simulated mark; nothing was fired"), std::string::npos)
+      << unreadable.err;
+}
+
+}  // namespace
+}  // namespace mark

@@ -153,4 +153,24 @@ double DoseRaster::max_pixel() const {
   return m;
 }
 
+bool DoseRaster::copy_rect(std::int64_t ix0, std::int64_t iy0, std::int64_t w, std::int64_t h,
+                           float* out) const {
+  std::fill(out, out + w * h, 0.0f);
+  bool any = false;
+  for (std::int64_t ty = iy0 >> tile_bits; ty <= (iy0 + h - 1) >> tile_bits; ++ty)
+    for (std::int64_t tx = ix0 >> tile_bits; tx <= (ix0 + w - 1) >> tile_bits; ++tx) {
+      const auto it = tiles_.find(key(tx, ty));
+      if (it == tiles_.end()) continue;
+      any = true;
+      const std::int64_t x0 = std::max(ix0, tx * tile_size), x1 = std::min(ix0 + w, (tx + 1) * tile_size);
+      const std::int64_t y0 = std::max(iy0, ty * tile_size), y1 = std::min(iy0 + h, (ty + 1) * tile_size);
+      for (std::int64_t y = y0; y < y1; ++y) {
+        const float* src = &it->second->dose[static_cast<std::size_t>(((y - ty * tile_size) << tile_bits) +
+                                                                     (x0 - tx * tile_size))];
+        std::copy(src, src + (x1 - x0), out + (y - iy0) * w + (x0 - ix0));
+      }
+    }
+  return any;
+}
+
 }  // namespace mark

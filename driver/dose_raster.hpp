@@ -39,6 +39,10 @@ class DoseRaster {
   bool bounds(std::int64_t& ix0, std::int64_t& iy0, std::int64_t& ix1, std::int64_t& iy1) const;
   // Highest pixel value.
   double max_pixel() const;
+  // Copies pixels [ix0, ix0 + w) × [iy0, iy0 + h) row by row (row iy0 first) into `out`
+  // (w × h values, zeros where nothing was deposited), a tile at a time. Returns whether any
+  // tile overlapped the rectangle.
+  bool copy_rect(std::int64_t ix0, std::int64_t iy0, std::int64_t w, std::int64_t h, float* out) const;
 
   static constexpr int tile_bits = 6;  // 64 × 64 pixel tiles
   static constexpr int tile_size = 1 << tile_bits;

@@ -14,6 +14,7 @@ packages=(
   libzint-dev libdmtx-dev libzbar-dev           # 2D codes: zint encodes, libdmtx and ZBar decode the simulated mark
   umockdev libumockdev-dev                      # the emulated LMC board behind real libusb (usbfs ioctls)
   hershey-fonts-data librecad-data
+  fonts-dejavu-core fonts-liberation2           # TrueType outlines for the fill tests (DejaVu Sans, Liberation Sans)
   libpython3.11 libedit2 libtirpc3   # runtime of LinuxCNC's rs274 (G-code validator, fetch_rs274.sh)
 )
 

@@ -12,6 +12,7 @@ std::vector<Command> all_commands() {
   c.push_back(make_gcode_command());
   c.push_back(make_tool_measure_command());
   c.push_back(make_gravure_command());
+  c.push_back(make_code_command());
   c.push_back(make_job_command());
   c.push_back(make_serial_command());
   c.push_back(make_log_command());

@@ -30,6 +30,7 @@ Command make_peen_command();
 Command make_gcode_command();
 Command make_tool_measure_command();
 Command make_gravure_command();
+Command make_code_command();
 Command make_job_command();
 Command make_serial_command();
 Command make_log_command();

@@ -81,6 +81,21 @@ void add_layout_options(CLI::App& app, LayoutArgs& a) {
   add_ranged_option(app, "--field", a.field_mm, "field size (square), mm", kFieldRange)->capture_default_str();
 }
 
+void add_fill_options(CLI::App& app, LayoutArgs& a) {
+  app.add_option("--fill", a.fill, "fill outline-font letters: none, hatch")->capture_default_str();
+  app.add_option("--fill-rule", a.fill_rule, "inside of overlapping outlines: nonzero (TrueType, CFF), evenodd")
+      ->capture_default_str();
+  add_hatch_options(app, a.hatch);
+}
+
+std::optional<FillOptions> to_fill(const LayoutArgs& a, double beam_radius_mm) {
+  if (a.fill == "none") return std::nullopt;
+  if (a.fill != "hatch") throw InputError("--fill '" + a.fill + "' is not one of none, hatch");
+  FillOptions o = to_fill_options(a.hatch, beam_radius_mm);
+  o.rule = parse_fill_rule(a.fill_rule);
+  return o;
+}
+
 LayoutOptions to_layout_options(const LayoutArgs& a) {
   // The base point lies in the field the text is checked against.
   const Range in_field{-a.field_mm / 2, a.field_mm / 2, "mm (the --field is " + format_number(a.field_mm) + " mm)"};
@@ -106,7 +121,13 @@ LaidOutText build_figure(const std::string& text, const LayoutArgs& args) {
   LaidOutText out;
   out.font = open_font(args.font, &warnings);
   for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
+  const std::optional<FillOptions> fill = to_fill(args);
   out.figure = layout_text(unescape_text(text), *out.font, to_layout_options(args));
+  if (fill) {
+    FillStats stats;
+    out.figure = fill_figure(out.figure, *fill, &stats);
+    out.fill = stats;
+  }
   out.field = Field{args.field_mm};
   if (out.figure.bounds().empty()) throw InputError("text '" + text + "' has nothing to mark");
   require_inside(out.figure.bounds(), out.field, "the text layout", kFieldRemedy);

@@ -1,13 +1,16 @@
 #pragma once
 // The layout options every command that takes text shares: --font, --height, --width-factor,
 // --gap, --line-spacing, --align, --x/--y, --angle, --circle with --start-angle or
-// --self-centred and --inside, --italic, --mirror, --field.
+// --self-centred and --inside, --italic, --mirror, --field. Commands that mark or draw the text
+// also take the fill options: --fill none|hatch, --fill-rule and the hatch options.
 #include <CLI/CLI.hpp>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "fonts/stroke_font.hpp"
+#include "marker/cli/hatch_options.hpp"
+#include "marker/fill/fill.hpp"
 #include "marker/layout/layout.hpp"
 
 namespace mark::cli {
@@ -30,9 +33,18 @@ struct LayoutArgs {
   bool mirror = false;
   bool replace_missing = false;
   double field_mm = 110.0;
+  // Filled outline fonts.
+  std::string fill = "none";       // none | hatch
+  std::string fill_rule = "nonzero";
+  HatchArgs hatch;
 };
 
 void add_layout_options(CLI::App& app, LayoutArgs& args);
+void add_fill_options(CLI::App& app, LayoutArgs& args);
+
+// The fill to apply, or nothing for --fill none; insets default to `beam_radius_mm`. Throws
+// InputError naming the option.
+std::optional<FillOptions> to_fill(const LayoutArgs& args, double beam_radius_mm = 0.02);
 
 // LayoutOptions from the parsed arguments; throws InputError for a malformed --circle.
 LayoutOptions to_layout_options(const LayoutArgs& args);
@@ -41,6 +53,7 @@ struct LaidOutText {
   std::shared_ptr<const StrokeFont> font;
   Figure figure;
   Field field;
+  std::optional<FillStats> fill;  // when the text was filled
 };
 
 // Command-line text: a backslash-n starts a new line, a double backslash is one backslash.
@@ -50,7 +63,8 @@ std::string unescape_text(const std::string& text);
 inline constexpr const char* kFieldRemedy =
     "lower --height, move the text with --x, --y or --align, or enlarge --field";
 
-// Opens the font, lays the text out and refuses an empty text or a layout that leaves the field.
+// Opens the font, lays the text out (and fills it with --fill hatch), and refuses an empty text
+// or a layout that leaves the field.
 LaidOutText build_figure(const std::string& text, const LayoutArgs& args);
 
 }  // namespace mark::cli

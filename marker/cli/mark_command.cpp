@@ -1,12 +1,14 @@
-// `marker mark TEXT [layout options] [--device sim|lmc[:SERIAL]|lmc-capture:FILE]
-//  [--head SL10|SL14|cheap] [--corner blanking|delays|none] [--speed MM_S] [--power PCT]
-//  [--frequency KHZ] [--pulse-width NS] [--preview FILE.png] [--virtual-time] [--json]
+// `marker mark TEXT [layout options] [--fill hatch …] [--code SYMBOLOGY:DATA --code-…]
+//  [--device sim|lmc[:SERIAL]|lmc-capture:FILE] [--head SL10|SL14|cheap]
+//  [--corner blanking|delays|none] [--speed MM_S] [--power PCT] [--frequency KHZ]
+//  [--pulse-width NS] [--preview FILE.png] [--dose-png FILE.png] [--virtual-time] [--json]
 //  [--inject KIND@N] [--trace FILE.csv] [--require-quality high|good] [LMC options]`
 // `marker mark --job FILE [--set NAME=VALUE …] [--count N] [--store PATH|URL] [--station NAME]
 //  [--remark ID]`: the production run, in mark_job.cpp.
 // The main job: real time by default (the drain paced at the tick, so the line memory is written
 // while it is read), quality figures against the laid-out text. Ctrl-C / SIGTERM put the laser
-// out within one drain block; the command then says where it stopped and exits 130.
+// out within one drain block; the command then says where it stopped and exits 130. Outline-font
+// text can be hatch-filled; a code marked with the text is read back off the simulated part.
 #include <unistd.h>
 
 #include <algorithm>
@@ -18,10 +20,11 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "driver/dose_png.hpp"
+#include "driver/grey_png.hpp"
 #include "driver/quality_class.hpp"
 #include "fonts/catalog.hpp"
 #include "fonts/error.hpp"
+#include "marker/cli/code_options.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/device_factory.hpp"
 #include "marker/cli/inject_option.hpp"
@@ -31,6 +34,8 @@
 #include "marker/cli/mark_job.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
+#include "marker/codes/code_data.hpp"
+#include "marker/codes/code_json.hpp"
 #include "marker/job/auto_speed.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
@@ -62,6 +67,9 @@ struct MarkArgs {
   std::string require_quality;
   LaserSettings laser;
   LmcArgs lmc;
+  std::string code;  // SYMBOLOGY:DATA
+  CodeArgs code_args;
+  VerifyArgs verify;
   bool virtual_time = false;
   bool json = false;
   MarkJobArgs production;  // --job and its options
@@ -73,20 +81,35 @@ JobSpec make_spec(const MarkArgs& a) {
   if (!head) throw InputError("--head '" + a.head + "' is not one of SL10, SL14, cheap");
   spec.head = *head;
   spec.head.field_mm = a.layout.field_mm;
-  Warnings warnings;
-  spec.font = open_font(a.layout.font, &warnings);
-  for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
   spec.text = unescape_text(a.text);
+  if (!spec.text.empty()) {
+    Warnings warnings;
+    spec.font = open_font(a.layout.font, &warnings);
+    for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
+  }
   spec.layout = to_layout_options(a.layout);
   spec.order = parse_stroke_order(a.order);
-  // Laid out here first so a text leaving the field is refused with what to change (the job
-  // checks it again, with its blanking lines, before the first sample).
-  const Figure figure = layout_text(spec.text, *spec.font, spec.layout);
-  if (!figure.bounds().empty())
-    require_inside(figure.bounds(), Field{spec.head.field_mm}, "the text layout", kFieldRemedy);
+  spec.verify = to_verify_options(a.verify);
+  const double beam_radius_mm = a.verify.beam_diameter_mm / 2;
+  spec.fill = to_fill(a.layout, beam_radius_mm);
+  if (!a.code.empty()) {
+    const std::size_t colon = a.code.find(':');
+    if (colon == std::string::npos)
+      throw InputError("--code '" + a.code + "': expected SYMBOLOGY:DATA, e.g. datamatrix:SN0042");
+    spec.codes.push_back(to_code_object(a.code.substr(0, colon), a.code.substr(colon + 1), a.code_args,
+                                        to_fill_options(a.layout.hatch, beam_radius_mm), "code-"));
+  }
+  // The letters laid out here first so a text leaving the field is refused with what to change
+  // (the job checks it again, with its blanking lines, before the first sample).
+  if (!spec.text.empty()) {
+    const Figure letters = layout_text(spec.text, *spec.font, spec.layout);
+    if (!letters.bounds().empty())
+      require_inside(letters.bounds(), Field{spec.head.field_mm}, "the text layout", kFieldRemedy);
+  }
   double speed_mm_s = 0;
   if (a.speed == "auto") {
-    speed_mm_s = auto_mark_speed_mm_s(figure, spec.head);
+    // The whole figure: filled letters' contour arcs and a code's dots count too.
+    speed_mm_s = auto_mark_speed_mm_s(job_figure(spec), spec.head);
   } else {
     const Range speeds = positive_up_to(spec.head.max_speed_mm_s, "mm/s (head " + spec.head.name + "'s positioning limit)");
     const std::optional<double> v = parse_number(a.speed);
@@ -120,6 +143,11 @@ nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobOptions&
   j["speed_mm_s"] = spec.pen.mark_speed_mm_s;
   j["tick_s"] = spec.pen.tick_s;
   j["line_memory_samples"] = options.memory_samples;
+  if (!r.codes.empty()) {
+    j["codes"] = nlohmann::json::array();
+    for (std::size_t k = 0; k < r.codes.size(); ++k)
+      j["codes"].push_back(code_to_json(r.job.codes[k], spec.codes[k].spec, r.codes[k]));
+  }
   return j;
 }
 
@@ -141,6 +169,15 @@ void print_summary(const JobSpec& spec, const JobResult& r, const std::string& d
     std::printf("pulses: %.1f µm apart at %.0f kHz on a %.0f µm spot, overlap %.0f %%%s\n",
                 r.pulses->spacing_max_um, r.pulses->frequency_khz, r.pulses->spot_diameter_um,
                 100 * r.pulses->overlap(), r.pulses->separate_dots() ? " — separate dots" : "");
+  for (std::size_t k = 0; k < r.codes.size(); ++k) {
+    const CodeVerification& v = r.codes[k];
+    const PlacedCode& c = r.job.codes[k];
+    std::printf("code %zu: %s %dx%d, module %.0f µm, read by %s: %s", k + 1,
+                std::string(to_string(c.matrix.symbology)).c_str(), c.matrix.rows, c.matrix.cols, v.module_um,
+                v.reader.c_str(), v.data_match ? "matches" : v.decoded ? "DIFFERS" : "NOT decoded");
+    if (v.decoded) std::printf(" '%s'", printable_bytes(v.decoded_data).c_str());
+    std::printf(", fill %.0f %%, %zu modules wrong\n", 100 * v.fill_ratio, v.modules_wrong);
+  }
 }
 
 // Where a job that did not finish stopped, on one line (stderr).
@@ -201,6 +238,11 @@ void require_quality(const JobSpec& spec, const std::string& name) {
   predict.virtual_time = true;
   SimScanner sim(simulator_options(spec));
   const JobResult r = run_job_simulated(spec, predict, sim);
+  for (std::size_t k = 0; k < r.codes.size(); ++k)
+    if (!r.codes[k].data_match)
+      throw InputError("--require-quality " + name + ": code " + std::to_string(k + 1) + " (" +
+                       std::string(to_string(spec.codes[k].spec.symbology)) +
+                       ") does not read back off the simulated mark; nothing was fired");
   const QualityClass got = classify(*r.quality);
   if (got >= *wanted) return;
   char msg[320];
@@ -214,7 +256,7 @@ void require_quality(const JobSpec& spec, const std::string& name) {
 }
 
 int run_mark(const MarkArgs& a) {
-  if (a.text.empty()) throw InputError("mark: give the text to mark, or --job FILE");
+  if (a.text.empty() && a.code.empty()) throw InputError("mark: give the text to mark (or --code), or --job FILE");
   const JobSpec spec = make_spec(a);
   // Every file the job writes is checked before anything is fired.
   if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
@@ -240,13 +282,24 @@ int run_mark(const MarkArgs& a) {
       scanner ? run_job_simulated(spec, options, *scanner) : run_job(spec, options, *device);
   // A job stopped by Ctrl-C leaves no files: what it would show is not the part on the machine's
   // table. A failed job's files show how far it got.
+  std::optional<CameraImage> picture;
   if (scanner && !interrupt_flag().requested()) {
     if (!a.preview.empty()) write_mark_preview(r.job.plan, scanner->dose(), a.preview);
-    if (!a.dose_png.empty()) write_file_whole(a.dose_png, encode_dose_png(scanner->dose()));
+    if (!a.dose_png.empty()) {
+      // The part as a camera sees it; a job with an inverted code is on a dark part.
+      bool dark_part = false;
+      for (const CodeObject& c : spec.codes) dark_part = dark_part || c.layout.invert;
+      FieldWindow window;
+      if (!dosed_window(scanner->dose(), 0.2, window)) window = {-1, -1, 1, 1};
+      picture = part_picture(scanner->dose(), window, spec.verify.response, dark_part);
+      write_file_whole(a.dose_png, encode_grey_png(*picture));
+    }
     if (!a.trace.empty()) write_trace(scanner->trace(), a.trace);
   }
   if (a.json) {
-    std::cout << to_json(a, spec, options, r, device->describe().name).dump() << "\n";
+    nlohmann::json j = to_json(a, spec, options, r, device->describe().name);
+    if (picture) j["dose_px_um"] = 1e6 / pixels_per_metre(picture->pixel_mm);
+    std::cout << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   } else {
     print_summary(spec, r, device->describe().name);
     if (!a.preview.empty()) std::printf("wrote %s\n", a.preview.c_str());
@@ -255,6 +308,10 @@ int run_mark(const MarkArgs& a) {
     print_stop(r, spec, interrupt_flag().requested(), device->describe().level);
     return r.outcome == JobOutcome::aborted ? kExitInterrupted : 1;
   }
+  for (std::size_t k = 0; k < r.codes.size(); ++k)
+    if (!r.codes[k].data_match)
+      std::fprintf(stderr, "marker: warning: code %zu (%s) does not read back off the simulated mark\n", k + 1,
+                   std::string(to_string(spec.codes[k].spec.symbology)).c_str());
   if (r.quality && classify(*r.quality) == QualityClass::poor)
     std::fprintf(stderr,
                  "marker: warning: poor mark predicted (max deviation %.1f µm, coverage %.2f %%, "
@@ -306,8 +363,15 @@ Command make_mark_command() {
       [a, modes](CLI::App& app) {
         auto* sub = app.add_subcommand("mark", "mark the text, or the parts of a job file, on a device (default: the simulated scanner)");
         modes->sub = sub;
-        sub->add_option("text", a->text, "text to mark (UTF-8; \\n starts a new line); or --job FILE");
+        sub->add_option("text", a->text,
+                        "text to mark (UTF-8; \\n starts a new line; may be \"\" with --code); or --job FILE");
         add_layout_options(*sub, a->layout);
+        add_fill_options(*sub, a->layout);
+        sub->add_option("--code", a->code,
+                        "also mark a code: SYMBOLOGY:DATA (datamatrix, gs1-datamatrix, qr, code128, gs1-128); "
+                        "placed with the --code-… options, hatched with the --hatch-… options");
+        add_code_options(*sub, a->code_args, "code-");
+        add_verify_options(*sub, a->verify);
         modes->shared.push_back(
             sub->add_option("--device", a->device,
                             "device: sim (the simulated scanner), lmc or lmc:SERIAL (a BJJCZ board, see "
@@ -333,7 +397,8 @@ Command make_mark_command() {
                           kExtensionRange);
         sub->add_option("--preview", a->preview,
                         "write the marked result: dose under the planned path (.png or .svg)");
-        sub->add_option("--dose-png", a->dose_png, "write the raw dose raster as a PNG");
+        sub->add_option("--dose-png", a->dose_png,
+                        "write the part as a camera sees it (PNG, pixel size in pHYs and as dose_px_um)");
         sub->add_option("--trace", a->trace,
                         "write one CSV row per sample: t_s,cmd_x_mm,cmd_y_mm,laser,beam_x_mm,beam_y_mm");
         modes->shared.push_back(sub->add_option(

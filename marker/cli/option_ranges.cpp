@@ -58,6 +58,11 @@ CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, std::opti
   return add_ranged(app, name, value, description, range);
 }
 
+CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, std::vector<double>& values,
+                               const std::string& description, const Range& range) {
+  return add_ranged(app, name, values, description, range)->delimiter(',');
+}
+
 CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, int& value,
                                const std::string& description, const WholeRange& range) {
   return add_ranged(app, name, value, description, range);

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "marker/limits/value_range.hpp"
 
@@ -25,6 +26,9 @@ inline void check_range(std::string_view option, const std::optional<double>& v,
 CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, double& value,
                                const std::string& description, const Range& range);
 CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, std::optional<double>& value,
+                               const std::string& description, const Range& range);
+// A comma-separated list of numbers, each within `range`.
+CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, std::vector<double>& values,
                                const std::string& description, const Range& range);
 // Whole numbers: the value must be written as one (no fraction, no exponent).
 CLI::Option* add_ranged_option(CLI::App& app, const std::string& name, int& value,

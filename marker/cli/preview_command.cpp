@@ -23,6 +23,7 @@ Command make_preview_command() {
         auto* sub = app.add_subcommand("preview", "draw the laid-out text with the field frame (SVG or PNG)");
         sub->add_option("text", a->text, "text to lay out (UTF-8; \\n in the text starts a new line)")->required();
         add_layout_options(*sub, a->layout);
+        add_fill_options(*sub, a->layout);
         sub->add_option("-o,--output", a->output, "output file, .svg or .png")->required();
         sub->add_flag("--no-travel", a->no_travel, "leave out the dashed travel between strokes");
         sub->add_flag("--json", a->json, "print what was drawn as one JSON object (docs/json.md)");

@@ -3,10 +3,14 @@
 #include <algorithm>
 
 #include "fonts/error.hpp"
+#include "fonts/stroke_font.hpp"
+#include "marker/codes/code_data.hpp"
+#include "marker/fill/fill.hpp"
 #include "marker/job/device_program.hpp"
 #include "marker/job/intended_strokes.hpp"
 #include "marker/job/job_compiler.hpp"
 #include "marker/job/job_run.hpp"
+#include "marker/job/simulate_plan.hpp"
 #include "marker/locus/locus_generator.hpp"
 
 namespace mark {
@@ -24,14 +28,54 @@ double seconds_since(JobClock::time_point t0) {
   return std::chrono::duration<double>(JobClock::now() - t0).count();
 }
 
-CompiledJob compile_job(const JobSpec& spec, DeviceLevel level) {
+void set_marked_text(JobSpec& spec, std::string_view text, bool code_escapes) {
+  if (spec.codes.empty())
+    spec.text = text;
+  else
+    spec.codes.front().spec.data = code_escapes ? unescape_code_data(text) : std::string(text);
+}
+
+Figure job_figure(const JobSpec& spec, std::vector<PlacedCode>* codes) {
+  const Field field{spec.head.field_mm};
+  Figure figure;
+  if (!spec.text.empty()) {
+    if (!spec.font) throw InputError("no font given for the text to mark");
+    figure = layout_text(spec.text, *spec.font, spec.layout);
+    check_layout(figure, spec);  // the letters before their fill, so the message names them
+    if (spec.fill) figure = fill_figure(figure, *spec.fill);
+  }
+  std::vector<PlacedCode> placed;
+  for (std::size_t k = 0; k < spec.codes.size(); ++k) {
+    PlacedCode code = place_encoded(spec.codes[k]);
+    const std::string name = "code " + std::to_string(k + 1);
+    // The quiet zone belongs to the code: it must fit in the field, and nothing else may be
+    // marked in it (a reader needs it bare), nor may the code be marked over an earlier one.
+    require_inside(code.bounds, field, name + " with its quiet zone");
+    for (const PlacedGlyph& g : figure.glyphs)
+      if (const auto p = code.first_intrusion(g.elements))
+        throw InputError(name + ": its quiet zone is marked by " +
+                         (g.code_point ? "the text (glyph " + describe_code_point(g.code_point) + ")"
+                                       : std::string("an earlier code")) +
+                         " at (" + std::to_string(p->x()) + ", " + std::to_string(p->y()) +
+                         ") mm; move the code or the text apart");
+    for (std::size_t e = 0; e < placed.size(); ++e)
+      if (placed[e].first_intrusion(code.elements))
+        throw InputError(name + " is marked in the quiet zone of code " + std::to_string(e + 1) +
+                         "; move them apart");
+    for (PlacedGlyph& g : code_figure(code).glyphs) figure.glyphs.push_back(std::move(g));
+    placed.push_back(std::move(code));
+  }
+  if (codes) *codes = std::move(placed);
+  return figure;
+}
+
+CompiledJob compile_job(const JobSpec& spec, DeviceLevel level, const Point& home) {
   check_spec(spec, spec.text);
   CompiledJob job;
   job.level = level;
-  job.figure = layout_text(spec.text, *spec.font, spec.layout);
-  check_layout(job.figure, spec);
+  job.figure = job_figure(spec, &job.codes);
   job.plan = level == DeviceLevel::commands ? plan_for_device(job.figure, spec.pen, spec.order)
-                                            : plan_figure(job.figure, spec.pen, spec.order);
+                                            : plan_figure(job.figure, spec.pen, spec.order, home);
   complete_plan(job, spec);
   return job;
 }
@@ -107,18 +151,20 @@ JobHeader job_header(const JobSpec& spec, const CompiledJob& job, const DeviceDe
   return h;
 }
 
-SimScannerOptions simulator_options(const JobSpec& spec) {
-  SimScannerOptions o;
-  o.head = spec.head;
-  o.tick_s = spec.pen.tick_s;
-  o.record_lit_paths = true;
-  return o;
+std::vector<CodeVerification> verify_codes(const JobSpec& spec, const CompiledJob& job, const DoseRaster& dose) {
+  std::vector<CodeVerification> out;
+  for (std::size_t k = 0; k < job.codes.size(); ++k)
+    out.push_back(verify_code(job.codes[k], spec.codes[k].spec, dose, spec.verify));
+  return out;
 }
+
+SimScannerOptions simulator_options(const JobSpec& spec) { return simulator_options(spec.head, spec.pen); }
 
 JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,
                             const QualityReference* reference) {
   JobResult result = run_job(spec, options, scanner);
   result.quality = simulated_quality(result, scanner, reference);
+  result.codes = verify_codes(spec, result.job, scanner.dose());
   return result;
 }
 

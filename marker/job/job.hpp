@@ -23,6 +23,9 @@
 #include "driver/quality.hpp"
 #include "driver/sim_scanner.hpp"
 #include "fonts/stroke_font.hpp"
+#include "marker/codes/code_object.hpp"
+#include "marker/codes/verify.hpp"
+#include "marker/fill/fill_options.hpp"
 #include "marker/layout/layout.hpp"
 #include "marker/plan/plan.hpp"
 #include "ringbuffer/drain_stats.hpp"
@@ -31,9 +34,12 @@
 namespace mark {
 
 struct JobSpec {
-  std::string text;  // UTF-8; '\n' starts a new line
+  std::string text;  // UTF-8; '\n' starts a new line (may be empty when the job has codes)
   std::shared_ptr<const StrokeFont> font;
   LayoutOptions layout;
+  std::optional<FillOptions> fill;  // outline-font letters hatch-filled (marker/fill)
+  std::vector<CodeObject> codes;    // codes marked after the text (marker/codes)
+  VerifyOptions verify;             // material and reader for reading the codes back
   HeadModel head = head_sl10();
   Pen pen;
   LaserSettings laser;  // the pen's laser source settings
@@ -44,16 +50,29 @@ struct JobSpec {
 // A job laid out, planned and checked: ready to stream to a device of `level`.
 struct CompiledJob {
   DeviceLevel level = DeviceLevel::samples;
-  Figure figure;
+  Figure figure;                  // the text's glyphs (filled or not), then one glyph per code
+  std::vector<PlacedCode> codes;  // the codes as placed, for their verification
   Plan plan;
   std::size_t laser_on_ticks = 0;   // the laser delay line's edge delays
   std::size_t laser_off_ticks = 0;
 };
 
+// Puts what a job-file object marks this time into its spec: the text of a text object, or the
+// data of a code object's one code (its \G \R \E \xHH escapes decoded when `code_escapes`).
+void set_marked_text(JobSpec& spec, std::string_view text, bool code_escapes);
+
+// What the job marks, before planning: the text laid out (and filled), then each code's marks as
+// one more glyph. Every part is refused if it leaves the field (naming it). `codes` receives the
+// placed codes when given.
+Figure job_figure(const JobSpec& spec, std::vector<PlacedCode>* codes = nullptr);
+
 // Layout, plan and every refusal. Throws InputError (or MissingGlyphError) naming the problem.
 // `level` picks the plan a device of that level takes (command-level: no host delay dwells).
 // The parts of a series compile incrementally with a JobCompiler (marker/job/job_compiler.hpp).
-CompiledJob compile_job(const JobSpec& spec, DeviceLevel level = DeviceLevel::samples);
+// `home` is where a sample-level device's mirrors are when the job starts (its plan's first jump
+// starts there).
+CompiledJob compile_job(const JobSpec& spec, DeviceLevel level = DeviceLevel::samples,
+                        const Point& home = Point(0, 0));
 
 // Fault injection (tests, `marker mark --inject KIND@N`): the drain finds the memory empty from
 // sample N on (underrun) or stops at sample N as if cancelled (abort). A device fault at N is
@@ -108,6 +127,7 @@ struct JobResult {
   DeviceReport device;
   std::optional<Quality> quality;  // when the device is the simulated scanner (run_job_simulated)
   std::optional<PulseFigures> pulses;  // when the device is the simulated scanner
+  std::vector<CodeVerification> codes;  // simulated scanner: each code read back off the mark
   CompiledJob job;                 // what was marked: figure and plan
 };
 
@@ -122,9 +142,12 @@ JobResult run_compiled_job(const JobSpec& spec, CompiledJob job, const JobOption
                            Device& device);
 // The simulated scanner for a spec: its head, its pen's tick, lit paths recorded.
 SimScannerOptions simulator_options(const JobSpec& spec);
+// Each of the job's codes read back off the dose of its mark (in the spec's order).
+std::vector<CodeVerification> verify_codes(const JobSpec& spec, const CompiledJob& job, const DoseRaster& dose);
 // Runs the job on that scanner and evaluates the quality figures against the figure's intended
 // strokes (against `reference` when given — it must be built from this spec's figure; a speed
-// search reuses one). The scanner keeps the dose for a preview.
+// search reuses one), and reads every code back off the simulated part. The scanner keeps the
+// dose for a preview.
 JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,
                             const QualityReference* reference = nullptr);
 // The quality figures of the job `result` just ran on `scanner` (how run_job_simulated gets

@@ -8,8 +8,8 @@
 namespace mark {
 
 void check_spec(const JobSpec& spec, std::string_view text) {
-  if (text.empty()) throw InputError("the text to mark is empty");
-  if (!spec.font) throw InputError("no font given for the text to mark");
+  if (text.empty() && spec.codes.empty()) throw InputError("the text to mark is empty");
+  if (!text.empty() && !spec.font) throw InputError("no font given for the text to mark");
   if (spec.passes < 1 || spec.passes > 100)
     throw InputError("passes " + std::to_string(spec.passes) + " is outside 1 to 100");
   check_pen(spec.pen, spec.head);
@@ -28,10 +28,15 @@ void complete_plan(CompiledJob& job, const JobSpec& spec) {
   job.laser_off_ticks = spec.pen.ticks(spec.pen.laser_off_delay_s);
 }
 
-JobCompiler::JobCompiler(JobSpec spec, DeviceLevel level)
-    : spec_(std::move(spec)), level_(level), replanner_(spec_.pen, spec_.order) {}
+JobCompiler::JobCompiler(JobSpec spec, DeviceLevel level, bool code_escapes)
+    : spec_(std::move(spec)), level_(level), code_escapes_(code_escapes), replanner_(spec_.pen, spec_.order) {}
 
 CompiledJob JobCompiler::compile(std::string_view text, const Point& home) {
+  if (!incremental()) {
+    JobSpec spec = spec_;
+    set_marked_text(spec, text, code_escapes_);
+    return compile_job(spec, level_, home);
+  }
   check_spec(spec_, text);
   CompiledJob job;
   job.level = level_;

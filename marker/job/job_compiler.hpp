@@ -24,8 +24,9 @@ void complete_plan(CompiledJob& job, const JobSpec& spec);
 
 class JobCompiler {
  public:
-  // spec.text is not used; each compile() brings its own.
-  JobCompiler(JobSpec spec, DeviceLevel level);
+  // spec.text (or its code's data) is not used; each compile() brings its own. A code object's
+  // data has its escapes decoded when `code_escapes`.
+  JobCompiler(JobSpec spec, DeviceLevel level, bool code_escapes = false);
 
   // Throws InputError (or MissingGlyphError) naming the problem; a refused text leaves the
   // compiler ready for the next.
@@ -37,8 +38,13 @@ class JobCompiler {
   std::size_t replanned_glyphs() const { return replanner_.replanned_glyphs(); }
 
  private:
+  // Plain text (no fill, no code) compiles from the last part's layout and plan; a filled text
+  // or a code is laid out and planned whole each time (compile_job).
+  bool incremental() const { return spec_.codes.empty() && !spec_.fill; }
+
   JobSpec spec_;
   DeviceLevel level_;
+  bool code_escapes_;
   Figure figure_;        // the last layout, the base of the next
   Point home_{0, 0};
   Replanner replanner_;  // the last plan, likewise

@@ -164,18 +164,16 @@ void check_name(JsonReader& r, std::string_view key, const std::string& name, co
 std::map<std::string, CounterSpec> JobFile::used_counters() const {
   std::map<std::string, CounterSpec> used;
   for (const JobObject& o : objects)
-    if (const TextObject* t = o.text())
-      for (const std::string& c : t->text.counters()) used.emplace(c, counters.at(c));
+    for (const std::string& c : o.text_template().counters()) used.emplace(c, counters.at(c));
   return used;
 }
 
 std::vector<std::string> JobFile::required_variables() const {
   std::vector<std::string> names;
   for (const JobObject& o : objects)
-    if (const TextObject* t = o.text())
-      for (const std::string& v : t->text.variables())
-        if (!variables.count(v) && std::find(names.begin(), names.end(), v) == names.end())
-          names.push_back(v);
+    for (const std::string& v : o.text_template().variables())
+      if (!variables.count(v) && std::find(names.begin(), names.end(), v) == names.end())
+        names.push_back(v);
   return names;
 }
 
@@ -247,7 +245,7 @@ JobFile parse_job(std::string_view text, const std::string& source) {
   const nlohmann::json* objects = top.raw("objects");
   if (!objects || !objects->is_array() || objects->empty())
     top.fail("objects", "a job needs a list of at least one object to mark");
-  const JobParseContext ctx{source};
+  const JobParseContext ctx{source, job.head.spot_diameter_um};
   std::set<std::string> names;
   for (std::size_t i = 0; i < objects->size(); ++i) {
     JsonReader o((*objects)[i], source, json_index("objects", i));
@@ -267,11 +265,12 @@ JobFile parse_job(std::string_view text, const std::string& source) {
     }
     obj.body = parse_object_body(obj.kind, o, ctx);
     o.finish();
-    if (const TextObject* t = obj.text()) {
-      for (const std::string& c : t->text.counters())
+    {
+      const TextTemplate& t = obj.text_template();
+      for (const std::string& c : t.counters())
         if (!job.counters.count(c))
           o.fail("template", "{" + c + "}: no counter named \"" + c + "\" in \"counters\"");
-      if (t->text.uses(FieldKind::shift) && job.shifts.empty())
+      if (t.uses(FieldKind::shift) && job.shifts.empty())
         o.fail("template", "{shift} needs the job's \"shifts\" (codes and start times)");
     }
     job.objects.push_back(std::move(obj));

@@ -11,6 +11,8 @@
 
 #include "driver/device.hpp"
 #include "driver/head_model.hpp"
+#include "marker/codes/code_object.hpp"
+#include "marker/fill/fill_options.hpp"
 #include "marker/layout/layout.hpp"
 #include "marker/plan/pen.hpp"
 #include "marker/plan/stroke_order.hpp"
@@ -32,17 +34,27 @@ struct JobPen {
   int passes = 1;
 };
 
-// Text with every layout option of the command line and a template.
+// Text with every layout option of the command line and a template; outline-font text may be
+// hatch-filled ("fill").
 struct TextObject {
   TextTemplate text;
   std::string font = "builtin";
   LayoutOptions layout;
   StrokeOrder order = StrokeOrder::glyph;
+  std::optional<FillOptions> fill;
 };
 
-// One alternative per object kind ("text"; codes and filled text come next). The parser picks
-// the kind from "kind" through a table in job_objects.cpp.
-using ObjectBody = std::variant<TextObject>;
+// A 2-D code or barcode whose data is a template: a UDI code carries the same serial as the
+// text beside it, from the same allocation. `code.spec.data` is filled in for each part.
+struct CodeJobObject {
+  TextTemplate data;
+  bool escapes = false;  // \G \R \E \xHH in the rendered data
+  CodeObject code;
+};
+
+// One alternative per object kind ("text", "code"). The parser picks the kind from "kind"
+// through a table in job_objects.cpp.
+using ObjectBody = std::variant<TextObject, CodeJobObject>;
 
 struct JobObject {
   std::string name;
@@ -51,6 +63,9 @@ struct JobObject {
   ObjectBody body;
 
   const TextObject* text() const { return std::get_if<TextObject>(&body); }
+  const CodeJobObject* code() const { return std::get_if<CodeJobObject>(&body); }
+  // The object's template, whatever its kind (the text, or the code's data).
+  const TextTemplate& text_template() const { return text() ? text()->text : code()->data; }
 };
 
 struct JobFile {
@@ -76,7 +91,7 @@ JobFile parse_job(std::string_view text, const std::string& source);
 // Reads the file (and nothing else); `bytes` receives its content for the SHA-256.
 JobFile read_job_file(const std::string& path, std::string* bytes = nullptr);
 
-// Object kinds (job_objects.cpp): "text" → TextObject.
+// Object kinds (job_objects.cpp): "text" → TextObject, "code" → CodeJobObject.
 class JsonReader;
 struct JobParseContext;
 ObjectBody parse_object_body(const std::string& kind, JsonReader& object, const JobParseContext& ctx);

@@ -5,7 +5,8 @@
 namespace mark {
 
 struct JobParseContext {
-  std::string file;  // for messages
+  std::string file;               // for messages
+  double spot_diameter_um = 40;   // the job's spot: its radius is the default inset of fills
 };
 
 }  // namespace mark

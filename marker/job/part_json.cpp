@@ -1,5 +1,6 @@
 #include "marker/job/part_json.hpp"
 
+#include "marker/codes/code_json.hpp"
 #include "marker/job/job_json.hpp"
 
 namespace mark {
@@ -11,6 +12,14 @@ nlohmann::json part_figures(const PartResult& part) {
     j["name"] = o.name;
     j["pen"] = o.pen;
     j["text"] = o.text;
+    // Each code read back off the simulated part (the device was the simulator).
+    if (o.started && !o.result.codes.empty()) {
+      j["codes"] = nlohmann::json::array();
+      for (std::size_t k = 0; k < o.result.codes.size(); ++k) {
+        const PlacedCode& c = o.result.job.codes.at(k);
+        j["codes"].push_back(code_to_json(c, c.spec, o.result.codes[k]));
+      }
+    }
     objects.push_back(std::move(j));
   }
   nlohmann::json j = {{"device", part.device},

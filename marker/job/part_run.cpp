@@ -46,7 +46,6 @@ PartRunner::PartRunner(const JobFile& job, const JobFonts& fonts,
   const DeviceDescription desc = device.describe();
   for (std::size_t i = 0; i < job.objects.size(); ++i) {
     const JobObject& o = job.objects[i];
-    if (!o.text()) throw InputError(object_place(job, i) + "objects of kind " + o.kind + " cannot be marked yet");
     JobSpec spec = object_spec(job, o, "", fonts);
     // A sample-level device runs on one sample clock: every pen's tick must be it.
     if (desc.level == DeviceLevel::samples && std::abs(spec.pen.tick_s - desc.tick_s) > 1e-12) {
@@ -57,7 +56,7 @@ PartRunner::PartRunner(const JobFile& job, const JobFonts& fonts,
                     o.pen.c_str(), spec.pen.tick_s * 1e6, desc.name.c_str(), desc.tick_s * 1e6);
       throw InputError(object_place(job, i) + msg);
     }
-    compilers_.emplace_back(std::move(spec), desc.level);
+    compilers_.emplace_back(std::move(spec), desc.level, o.code() && o.code()->escapes);
   }
   mirrors_ = device_position();
 }
@@ -142,10 +141,14 @@ PartResult PartRunner::run(PartResult part, std::vector<CompiledJob> compiled,
     for (; i < part.objects.size(); ++i) {
       ObjectRun& o = part.objects[i];
       JobSpec spec = compilers_[i].spec();
-      spec.text = o.text;
+      const JobObject& object = job_.objects[i];
+      set_marked_text(spec, o.text, object.code() && object.code()->escapes);
       o.result = run_compiled_job(spec, std::move(compiled[i]), options.job, device_);
       o.started = true;
-      if (scanner) o.result.quality = simulated_quality(o.result, *scanner);
+      if (scanner) {
+        o.result.quality = simulated_quality(o.result, *scanner);
+        o.result.codes = verify_codes(spec, o.result.job, scanner->dose());
+      }
       if (o.result.outcome != JobOutcome::done) {
         part.outcome = o.result.outcome;
         part.stopped_object = i;

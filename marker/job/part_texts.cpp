@@ -4,6 +4,7 @@
 
 #include "fonts/catalog.hpp"
 #include "fonts/error.hpp"
+#include "marker/codes/code_data.hpp"
 #include "marker/vars/render.hpp"
 
 namespace mark {
@@ -13,8 +14,7 @@ std::map<std::string, std::string> job_variables(const JobFile& job,
   std::map<std::string, std::string> values = job.variables;
   std::vector<std::string> used;
   for (const JobObject& o : job.objects)
-    if (const TextObject* t = o.text())
-      for (const std::string& v : t->text.variables()) used.push_back(v);
+    for (const std::string& v : o.text_template().variables()) used.push_back(v);
   for (const auto& [name, value] : sets) {
     if (std::find(used.begin(), used.end(), name) == used.end()) {
       // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on the chained operator+.
@@ -42,10 +42,8 @@ std::vector<ObjectText> render_objects(const JobFile& job,
   std::vector<ObjectText> texts;
   for (std::size_t i = 0; i < job.objects.size(); ++i) {
     const JobObject& o = job.objects[i];
-    const TextObject* t = o.text();
-    if (!t) continue;
     try {
-      texts.push_back({o.name, render(t->text, v)});
+      texts.push_back({o.name, render(o.text_template(), v)});
     } catch (const InputError& e) {
       throw InputError(object_place(job, i) + e.what());
     }
@@ -84,17 +82,24 @@ JobFonts::JobFonts(const JobFile& job, std::vector<std::string>* warnings) {
 
 JobSpec object_spec(const JobFile& job, const JobObject& object, const std::string& text,
                     const JobFonts& fonts) {
-  const TextObject& t = *object.text();
   const JobPen& pen = job.pens.at(object.pen);
   JobSpec spec;
-  spec.text = text;
-  spec.font = fonts.font(t.font);
-  spec.layout = t.layout;
   spec.head = job.head;
   spec.pen = pen.motion;
   spec.laser = pen.laser;
   spec.passes = pen.passes;
-  spec.order = t.order;
+  // The head's spot is the beam the codes are read back with (and a line of its width at 1 m/s).
+  spec.verify.response.spot_diameter_mm = spec.verify.response.reference_width_mm =
+      job.head.spot_diameter_um / 1000;
+  if (const TextObject* t = object.text()) {
+    spec.font = fonts.font(t->font);
+    spec.layout = t->layout;
+    spec.order = t->order;
+    spec.fill = t->fill;
+  } else {
+    spec.codes.push_back(object.code()->code);
+  }
+  set_marked_text(spec, text, object.code() && object.code()->escapes);
   return spec;
 }
 

@@ -11,9 +11,8 @@
 #include "driver/sim_scanner.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/intended_strokes.hpp"
-#include "marker/locus/locus_generator.hpp"
+#include "marker/job/simulate_plan.hpp"
 #include "marker/plan/plan.hpp"
-#include "ringbuffer/laser_delay_line.hpp"
 #include "tests/marker/plan_test_support.hpp"
 
 namespace mark {
@@ -27,21 +26,8 @@ struct Marked {
 // Plan → locus → laser delay line → simulated SL10, then the quality figures.
 Marked simulate(const Figure& f, const Pen& pen) {
   const Plan plan = plan_figure(f, pen);
-  SimScannerOptions o;
-  o.head = head_sl10();
-  SimScanner sim(o);
-  LaserDelayLine delay(pen.ticks(pen.laser_on_delay_s), pen.ticks(pen.laser_off_delay_s));
-  LocusGenerator gen(plan.commands, pen.tick_s);
-  std::vector<ScanSample> block(1024);
-  ScanSample last{};
-  while (std::size_t n = gen.generate(block.data(), block.size())) {
-    delay.apply(std::span<ScanSample>(block.data(), n));
-    sim.write(std::span<const ScanSample>(block.data(), n));
-    last = block[n - 1];
-  }
-  std::vector<ScanSample> tail;
-  delay.flush(last, tail);
-  sim.write(tail);
+  SimScanner sim(simulator_options(head_sl10(), pen));
+  simulate_plan(plan, sim);
   return {evaluate_quality(intended_polylines(f), sim.lit_paths(), sim.dose()), sim.device_time_s()};
 }
 

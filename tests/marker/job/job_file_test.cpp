@@ -131,7 +131,7 @@ TEST(JobFile, MalformedFilesGiveOneLineErrors) {
       {with("{serial} {shift}", "{serial"), "job.json: objects[0].template: 'SN {serial' at character 4: '{' without a closing '}'"},
       {with("\"22:00\"", "\"24:00\""), "job.json: shifts[2].start: '24:00' is not a time of day (00:00 to 23:59)"},
       {with("\"22:00\"", "\"14:00\""), "job.json: shifts: shifts 'B' and 'C' both start at 14:00"},
-      {with("\"kind\": \"text\"", "\"kind\": \"hologram\""), "job.json: objects[1].kind: \"hologram\" is not an object kind (text)"},
+      {with("\"kind\": \"text\"", "\"kind\": \"hologram\""), "job.json: objects[1].kind: \"hologram\" is not an object kind (text, code)"},
       {with("\"name\": \"lot\"", "\"name\": \"sn\""), "job.json: objects[1].name: another object is called \"sn\""},
       {with("\"radius_mm\": 20", "\"radius_mm\": -20"), "job.json: objects[1].circle.radius_mm: -20 mm is outside above 0, up to 10000 mm"},
       {with("\"height_mm\": 3", "\"height_mm\": 3, \"height_mm\": 4"), "job.json: key \"height_mm\" appears twice in one object"},

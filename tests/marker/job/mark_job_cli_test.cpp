@@ -198,7 +198,7 @@ TEST_F(MarkJobCli, OptionsOfTheOtherModeAreRefused) {
   EXPECT_EQ(r.err, "marker: --count applies to a production run: give --job FILE\n");
   r = run_cli({"mark"});
   EXPECT_EQ(r.code, 1);
-  EXPECT_EQ(r.err, "marker: mark: give the text to mark, or --job FILE\n");
+  EXPECT_EQ(r.err, "marker: mark: give the text to mark (or --code), or --job FILE\n");
   r = mark({"--count", "0"});
   EXPECT_EQ(r.code, 1);
   EXPECT_EQ(r.err, "marker: --count: 0 is outside the range 1 to 1000000000\n");
@@ -265,6 +265,40 @@ TEST_F(MarkJobCli, CtrlCFinishesThePartAbortedAndStartsNoOther) {
   const auto r = mark({"--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(json_lines(r.out)[0]["serials"]["serial"], 42);
+}
+
+// A job with a text and a UDI code carrying the same serial: every part's code is read back off
+// the simulated mark with that part's number, the serials consecutive.
+TEST_F(MarkJobCli, EachPartsCodeReadsBackWithItsOwnSerial) {
+  {
+    std::ofstream f(job);
+    f << R"({
+  "format": "marker-job/1",
+  "head": {"model": "SL10", "spot_diameter_um": 40},
+  "counters": {"serial": {"start": 7, "width": 6}},
+  "pens": {"text": {"speed_mm_s": 800}, "code": {"speed_mm_s": 1000}},
+  "objects": [
+    {"name": "sn", "pen": "text", "template": "SN {serial}", "height_mm": 2, "x_mm": -14, "y_mm": 0},
+    {"name": "udi", "kind": "code", "pen": "code", "symbology": "gs1-datamatrix",
+     "template": "(01)09506000134352(21){serial}", "module_mm": 0.3, "x_mm": 8, "y_mm": 0}
+  ]
+})";
+  }
+  const auto r = mark({"--count", "2", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto parts = json_lines(r.out);
+  ASSERT_EQ(parts.size(), 2u);
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const std::string serial = i == 0 ? "000007" : "000008";
+    EXPECT_EQ(parts[i]["serials"]["serial"], 7 + static_cast<int>(i));
+    EXPECT_EQ(parts[i]["objects"][0]["text"], "SN " + serial);
+    const nlohmann::json& codes = parts[i]["objects"][1]["codes"];
+    ASSERT_EQ(codes.size(), 1u) << parts[i].dump();
+    EXPECT_EQ(codes[0]["symbology"], "gs1-datamatrix");
+    EXPECT_TRUE(codes[0]["data_match"].get<bool>()) << codes[0].dump();
+    EXPECT_TRUE(codes[0]["decoded"].get<bool>());
+    EXPECT_NE(codes[0]["decoded_data"].get<std::string>().find(serial), std::string::npos) << codes[0].dump();
+  }
 }
 
 }  // namespace

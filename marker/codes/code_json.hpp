@@ -1,0 +1,14 @@
+#pragma once
+// One code's figures as JSON, the same object for `marker code --json` and for each entry of
+// `marker mark --json`'s "codes" list (fields and units in docs/codes.md).
+#include <nlohmann/json.hpp>
+
+#include "marker/codes/code_marks.hpp"
+#include "marker/codes/code_spec.hpp"
+#include "marker/codes/verify.hpp"
+
+namespace mark {
+
+nlohmann::json code_to_json(const PlacedCode& code, const CodeSpec& spec, const CodeVerification& v);
+
+}  // namespace mark

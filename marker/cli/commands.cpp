@@ -11,6 +11,7 @@ std::vector<Command> all_commands() {
   c.push_back(make_peen_command());
   c.push_back(make_gcode_command());
   c.push_back(make_tool_measure_command());
+  c.push_back(make_head_command());
   return c;
 }
 

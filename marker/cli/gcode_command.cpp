@@ -5,8 +5,6 @@
 //  [--stepover MM] [--cutter-comp] [--tool-image FILE --pixel-size UM] -o FILE.ngc
 //  [--preview FILE.svg]`: CNC engraving G-code for the same text and fitting as the laser.
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "fonts/error.hpp"
@@ -17,6 +15,7 @@
 #include "marker/cnc/protrusion.hpp"
 #include "marker/cnc/tool/tool_measure.hpp"
 #include "marker/cnc/toolpath_preview.hpp"
+#include "marker/io/atomic_file.hpp"
 
 namespace mark::cli {
 namespace {
@@ -42,20 +41,6 @@ void print(const char* format, T... values) {
   char line[512];
   std::snprintf(line, sizeof line, format, values...);
   std::cout << line;
-}
-
-// Writes next to the target and renames, so a failure never leaves half a program behind.
-void write_file(const std::string& path, const std::string& text) {
-  const std::string temp = path + ".part";
-  {
-    std::ofstream out(temp, std::ios::binary);
-    if (!out) throw InputError("output file '" + path + "': cannot be written");
-    out << text;
-    if (!out) throw InputError("output file '" + path + "': write failed");
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, path, ec);
-  if (ec) throw InputError("output file '" + path + "': " + ec.message());
 }
 
 int run_gcode(GcodeArgs& a) {
@@ -97,7 +82,7 @@ int run_gcode(GcodeArgs& a) {
   }
   GcodeStats st;
   const std::string program = write_gcode(tp, a.gcode, &st);
-  write_file(a.output, program);
+  write_file_atomically(a.output, program);
   print("%s: %zu lines, %zu rapid, %zu feed, %zu arc moves; %zu subprograms, %zu calls, %zu inlined\n",
         a.output.c_str(), st.lines, st.rapids, st.feeds, st.arcs, tp.subs.size(), st.calls, st.inlined);
   if (protrusion) {

@@ -64,9 +64,8 @@ JobResult run_job(const JobSpec& spec, const JobOptions& options, Sink<ScanSampl
     throw;
   }
   const std::vector<Command>& commands = result.job.plan.commands;
-  LocusGenerator locus(commands, spec.pen.tick_s);
-  const std::uint64_t total =
-      options.progress ? LocusGenerator::count_samples(commands, spec.pen.tick_s) : 0;
+  LocusGenerator locus(result.job.plan);
+  const std::uint64_t total = options.progress ? LocusGenerator::count_samples(result.job.plan) : 0;
 
   std::vector<ScanSample> buffer(std::max(options.block, options.first_block));
   bool first = true;

@@ -31,7 +31,7 @@ void compile_to_first_sample(benchmark::State& state, const JobSpec& spec) {
   std::vector<ScanSample> block(256);
   for (auto _ : state) {
     const CompiledJob job = compile_job(spec);
-    LocusGenerator locus(job.plan.commands, spec.pen.tick_s);
+    LocusGenerator locus(job.plan);
     const std::size_t n = locus.generate(block.data(), block.size());
     memory.push(std::span<const ScanSample>(block.data(), n));
     benchmark::DoNotOptimize(memory.pop(std::span<ScanSample>(block)));

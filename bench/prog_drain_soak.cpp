@@ -1,9 +1,11 @@
 // drain_soak: the line memory read out in real time at 100 kHz for N seconds (default 60) while
 // a producer writes into it alongside, into the simulated scanner (or a null sink). Prints the
 // underruns (target 0), the block lateness (median, p99, max) and the peak fill. Exit status 1
-// if any underrun occurred.
+// if any underrun occurred. --hog N runs N busy threads beside it (a CPU-hogging neighbour);
+// --no-realtime leaves the drain at normal priority, so the two can be compared in one run.
 //
 //   drain_soak [--seconds 60] [--rate 100000] [--block 100] [--capacity 65536] [--sink sim|null]
+//              [--hog N] [--no-realtime]
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -48,6 +50,8 @@ int main(int argc, char** argv) {
   double seconds = 60, rate = 100000;
   std::size_t block = 100, capacity = 1 << 16;
   std::string sink_name = "sim";
+  int hogs = 0;
+  bool realtime = true;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](const char* name) -> std::string {
@@ -63,6 +67,8 @@ int main(int argc, char** argv) {
       else if (a == "--block") block = std::stoul(value("--block"));
       else if (a == "--capacity") capacity = std::stoul(value("--capacity"));
       else if (a == "--sink") sink_name = value("--sink");
+      else if (a == "--hog") hogs = std::stoi(value("--hog"));
+      else if (a == "--no-realtime") realtime = false;
       else {
         std::fprintf(stderr, "drain_soak: unknown option %s\n", a.c_str());
         return 2;
@@ -73,8 +79,8 @@ int main(int argc, char** argv) {
     }
   }
   if (!(seconds > 0) || !(rate > 0) || block == 0 || capacity == 0 ||
-      (sink_name != "sim" && sink_name != "null")) {
-    std::fprintf(stderr, "drain_soak: need --seconds > 0, --rate > 0, --block ≥ 1, --capacity ≥ 1, --sink sim|null\n");
+      (sink_name != "sim" && sink_name != "null") || hogs < 0 || hogs > 64) {
+    std::fprintf(stderr, "drain_soak: need --seconds > 0, --rate > 0, --block ≥ 1, --capacity ≥ 1, --sink sim|null, --hog 0..64\n");
     return 2;
   }
 
@@ -89,9 +95,19 @@ int main(int argc, char** argv) {
       sink_name == "sim" ? static_cast<mark::Sink<mark::ScanSample>&>(sim) : null_sink;
 
   mark::Drain<mark::ScanSample> drain(
-      memory, sink, {.rate_hz = rate, .block_samples = block, .start_fill = capacity / 2});
-  std::printf("drain_soak: %.0f s at %.0f Hz, %zu-sample blocks, capacity %zu, sink %s\n", seconds,
-              rate, block, capacity, sink_name.c_str());
+      memory, sink,
+      {.rate_hz = rate, .block_samples = block, .start_fill = capacity / 2,
+       .realtime_priority = realtime ? 80 : 0});
+  std::printf("drain_soak: %.0f s at %.0f Hz, %zu-sample blocks, capacity %zu, sink %s, %d hog "
+              "thread(s), realtime %s\n",
+              seconds, rate, block, capacity, sink_name.c_str(), hogs, realtime ? "asked" : "off");
+  std::atomic<bool> stop_hogs{false};
+  std::vector<std::thread> hog_threads;
+  for (int h = 0; h < hogs; ++h)
+    hog_threads.emplace_back([&stop_hogs] {
+      volatile double x = 1;
+      while (!stop_hogs.load(std::memory_order_relaxed)) x = x * 1.0000001 + 1e-9;
+    });
   std::fflush(stdout);
   const auto t0 = std::chrono::steady_clock::now();
   drain.start();
@@ -101,10 +117,14 @@ int main(int argc, char** argv) {
     st = drain.join();
   } catch (const std::exception& e) {
     producer.join();
+    stop_hogs = true;
+    for (std::thread& t : hog_threads) t.join();
     std::fprintf(stderr, "drain_soak: %s\n", e.what());
     return 1;
   }
   producer.join();
+  stop_hogs = true;
+  for (std::thread& t : hog_threads) t.join();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   std::printf("samples out        %llu (device time %.3f s, wall %.3f s)\n",
@@ -115,6 +135,8 @@ int main(int argc, char** argv) {
   std::printf("block lateness     median %.1f us, p99 %.1f us, max %.1f us\n", st.lateness_median_us,
               st.lateness_p99_us, st.lateness_max_us);
   std::printf("peak fill          %zu of %zu samples\n", st.peak_fill, capacity);
+  std::printf("sched_fifo         %s\n", st.realtime_granted ? "granted" : "not granted");
   if (sink_name == "sim") std::printf("sim device time    %.3f s\n", sim.device_time_s());
-  return st.underrun_events == 0 && st.samples_out == total ? 0 : 1;
+  // The job's samples and the drain's closing safe sample.
+  return st.end == mark::DrainEnd::completed && st.samples_out == total + 1 ? 0 : 1;
 }

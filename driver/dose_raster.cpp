@@ -55,6 +55,30 @@ void DoseRaster::deposit_segment(Vec2 a, Vec2 b, double dose) {
   for (int i = 0; i < n; ++i) deposit(a + ((i + 0.5) / n) * (b - a), share);
 }
 
+void DoseRaster::reserve_along(const std::vector<Vec2>& polyline, double margin_mm) {
+  const double tile_mm = tile_size * pixel_mm_;
+  // Points along the polyline are at most half a tile apart; a square of half-width
+  // margin + half a tile around each covers everything within margin of the segments between.
+  const double reach = margin_mm + 0.5 * tile_mm;
+  const auto reserve_square = [&](Vec2 p) {
+    const auto tx0 = static_cast<std::int64_t>(std::floor((p.x - reach) / tile_mm));
+    const auto tx1 = static_cast<std::int64_t>(std::floor((p.x + reach) / tile_mm));
+    const auto ty0 = static_cast<std::int64_t>(std::floor((p.y - reach) / tile_mm));
+    const auto ty1 = static_cast<std::int64_t>(std::floor((p.y + reach) / tile_mm));
+    for (std::int64_t ty = ty0; ty <= ty1; ++ty)
+      for (std::int64_t tx = tx0; tx <= tx1; ++tx) {
+        auto& slot = tiles_[key(tx, ty)];
+        if (!slot) slot = std::make_unique<Tile>();
+      }
+  };
+  for (std::size_t i = 0; i < polyline.size(); ++i) {
+    const Vec2 a = polyline[i], b = i + 1 < polyline.size() ? polyline[i + 1] : a;
+    const int n = std::max(1, static_cast<int>(std::ceil(norm(b - a) / (0.5 * tile_mm))));
+    for (int k = 0; k <= n; ++k) reserve_square(a + (static_cast<double>(k) / n) * (b - a));
+  }
+  cached_tile_ = nullptr;
+}
+
 double DoseRaster::pixel(std::int64_t ix, std::int64_t iy) const {
   const float* p = find_pixel(ix, iy);
   return p ? *p : 0.0;

@@ -21,6 +21,11 @@ class DoseRaster {
   // move leaves a continuous trace rather than dots.
   void deposit_segment(Vec2 a, Vec2 b, double dose);
 
+  // Allocate every tile within margin_mm of the polyline now, so later deposits there do not
+  // allocate (the simulator sizes its raster before the first sample of a job).
+  void reserve_along(const std::vector<Vec2>& polyline, double margin_mm);
+  std::size_t tiles() const { return tiles_.size(); }
+
   // Dose of pixel (ix, iy); pixel (ix, iy) is centred on (ix·pixel, iy·pixel) mm.
   double pixel(std::int64_t ix, std::int64_t iy) const;
   // Dose in a spot-sized disc of radius_mm around p: pixels weighted by how far inside the disc

@@ -8,6 +8,24 @@
 #include "driver/device_error.hpp"
 
 namespace mark {
+namespace {
+
+// Dose can land away from the planned lit path by the head's lag (up to about v·τ where a
+// strategy cuts a corner) plus the bilinear splat; tiles within this margin are sized up front.
+double dose_margin_mm(const JobHeader& header, const HeadModel& head) {
+  double fastest = 0;
+  for (const DevicePen& p : header.pens) fastest = std::max(fastest, p.mark_speed_mm_s);
+  if (fastest <= 0) fastest = head.max_speed_mm_s;
+  return 2 * std::min(fastest, head.max_speed_mm_s) * head.tau_s + 0.05;
+}
+
+double polyline_length(const std::vector<Vec2>& line) {
+  double len = 0;
+  for (std::size_t i = 1; i < line.size(); ++i) len += norm(line[i] - line[i - 1]);
+  return len;
+}
+
+}  // namespace
 
 SimScanner::SimScanner(SimScannerOptions options)
     : options_(std::move(options)), dose_(options_.pixel_mm) {
@@ -17,6 +35,131 @@ SimScanner::SimScanner(SimScannerOptions options)
   if (!(h.tau_s > 0) || !(h.max_speed_mm_s > 0) || !(h.max_accel_mm_s2 > 0) || !(h.field_mm > 0))
     throw DeviceError("simulated scanner: head " + h.name +
                       " needs positive tau, speed and acceleration limits and field");
+}
+
+DeviceDescription SimScanner::describe() const {
+  DeviceDescription d;
+  d.name = "sim " + options_.head.name;
+  d.level = DeviceLevel::samples;
+  d.field_mm = options_.head.field_mm;
+  d.tick_s = options_.tick_s;
+  d.arcs = false;
+  d.max_speed_mm_s = options_.head.max_speed_mm_s;
+  d.laser_settings = true;
+  d.fifo_samples = 0;
+  return d;
+}
+
+void SimScanner::start_job() {
+  trail_.flush();
+  dose_ = DoseRaster(options_.pixel_mm);
+  lit_points_.clear();
+  lit_starts_.clear();
+  lit_.runs.clear();
+  lit_stale_ = false;
+  trace_.clear();
+  samples_ = 0;
+  was_lit_ = false;
+  progress_.store(0, std::memory_order_relaxed);
+  state_.store(DeviceState::running, std::memory_order_release);
+}
+
+void SimScanner::begin_job(const JobHeader& header) {
+  const DeviceState s = state_.load(std::memory_order_acquire);
+  if (s != DeviceState::idle)
+    throw DeviceFaultError({FaultCategory::device,
+                            "simulated scanner (" + options_.head.name + "): begin_job while " +
+                                std::string(to_string(s)) + "; reset() it first",
+                            0});
+  if (header.field_mm > options_.head.field_mm * (1 + 1e-12)) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg,
+                  "simulated scanner (%s): the job's field %.3f mm is larger than the head's "
+                  "%.3f mm",
+                  options_.head.name.c_str(), header.field_mm, options_.head.field_mm);
+    throw DeviceFaultError({FaultCategory::out_of_field, msg, 0});
+  }
+  start_job();
+
+  // Size everything the drain thread will touch, so write() never allocates.
+  const double margin = dose_margin_mm(header, options_.head);
+  double lit_length = 0;
+  for (const auto& line : header.lit_paths) {
+    dose_.reserve_along(line, margin);
+    lit_length += polyline_length(line);
+  }
+  if (options_.record_lit_paths) {
+    // A point is kept every lit_path_spacing along the beam plus the ends of each run; the lit
+    // beam path is about as long as the planned one. Twice that, and runs for flicker.
+    const std::size_t runs = 4 * header.lit_paths.size() + 64;
+    lit_starts_.reserve(runs);
+    lit_points_.reserve(static_cast<std::size_t>(2 * lit_length / options_.lit_path_spacing_mm) +
+                        4 * runs + 1024);
+  }
+  if (options_.trace) trace_.reserve(header.expected_samples + 1024);
+}
+
+DeviceReport SimScanner::end_job() {
+  trail_.flush();
+  DeviceReport r;
+  {
+    std::lock_guard<std::mutex> lock(fault_mutex_);
+    r.fault = fault_;
+  }
+  DeviceState s = state_.load(std::memory_order_acquire);
+  if (s == DeviceState::running || s == DeviceState::idle)
+    s = halted() ? DeviceState::aborted : DeviceState::done;
+  if (r.fault) s = DeviceState::failed;
+  state_.store(s, std::memory_order_release);
+  r.outcome = s;
+  r.samples_out = samples_;
+  r.device_time_s = device_time_s();
+  r.figures = {{"samples", static_cast<double>(samples_)},
+               {"device_time_s", device_time_s()},
+               {"dose_tiles", static_cast<double>(dose_.tiles())}};
+  return r;
+}
+
+void SimScanner::abort() noexcept {
+  abort_requested_.store(true, std::memory_order_release);
+  laser_on_.store(false, std::memory_order_release);
+  DeviceState s = DeviceState::running;
+  state_.compare_exchange_strong(s, DeviceState::aborted, std::memory_order_acq_rel);
+}
+
+DeviceStatus SimScanner::status() const {
+  DeviceStatus st;
+  st.state = state_.load(std::memory_order_acquire);
+  st.position = {pos_x_.load(std::memory_order_relaxed), pos_y_.load(std::memory_order_relaxed)};
+  st.laser_on = laser_on_.load(std::memory_order_relaxed);
+  st.progress = progress_.load(std::memory_order_relaxed);
+  std::lock_guard<std::mutex> lock(fault_mutex_);
+  st.fault = fault_;
+  return st;
+}
+
+void SimScanner::reset() {
+  trail_.flush();
+  halted_.store(false, std::memory_order_release);
+  abort_requested_.store(false, std::memory_order_release);
+  laser_cmd_ = false;
+  power_ = 0;
+  was_lit_ = false;
+  {
+    std::lock_guard<std::mutex> lock(fault_mutex_);
+    fault_.reset();
+  }
+  state_.store(DeviceState::idle, std::memory_order_release);
+}
+
+void SimScanner::fail(DeviceFault fault) {
+  halt();
+  {
+    std::lock_guard<std::mutex> lock(fault_mutex_);
+    fault_ = fault;
+  }
+  state_.store(DeviceState::failed, std::memory_order_release);
+  throw DeviceFaultError(std::move(fault));
 }
 
 void SimScanner::check_block(std::span<const ScanSample> block) const {
@@ -31,30 +174,56 @@ void SimScanner::check_block(std::span<const ScanSample> block) const {
                     "±%.3f mm; laser halted",
                     options_.head.name.c_str(),
                     static_cast<unsigned long long>(samples_ + i), a == 0 ? 'x' : 'y', c[a], half);
-      throw DeviceError(msg);
+      throw DeviceFaultError({FaultCategory::out_of_field, msg, samples_ + i});
     }
   }
 }
 
 void SimScanner::write(std::span<const ScanSample> block) {
-  if (halted_) throw DeviceError("simulated scanner (" + options_.head.name + "): halted, laser off");
+  if (halted_.load(std::memory_order_acquire) || abort_requested_.load(std::memory_order_acquire)) {
+    halt();
+    throw DeviceError("simulated scanner (" + options_.head.name + "): halted, laser off");
+  }
+  const DeviceState state = state_.load(std::memory_order_acquire);
+  if (state == DeviceState::idle) start_job();  // implicit job
+  if (state != DeviceState::idle && state != DeviceState::running)
+    throw DeviceError("simulated scanner (" + options_.head.name + "): the job has ended (" +
+                      std::string(to_string(state)) + "); reset() it first");
   try {
     check_block(block);
-  } catch (...) {
-    halt();
-    throw;
+  } catch (const DeviceFaultError& e) {
+    fail(e.fault());
   }
-  for (const ScanSample& s : block) follow(s);
+  for (const ScanSample& s : block) {
+    if (samples_ == options_.fault_at) {
+      char msg[160];
+      std::snprintf(msg, sizeof msg,
+                    "simulated scanner (%s): injected device fault at sample %llu; laser halted",
+                    options_.head.name.c_str(), static_cast<unsigned long long>(samples_));
+      trail_.flush();
+      fail({FaultCategory::device, msg, samples_});
+    }
+    follow(s);
+  }
   trail_.flush();  // the raster is complete after every block
+  publish_status();
+}
+
+void SimScanner::publish_status() {
+  progress_.store(samples_, std::memory_order_relaxed);
+  pos_x_.store(static_cast<float>(axis_[0].x), std::memory_order_relaxed);
+  pos_y_.store(static_cast<float>(axis_[1].x), std::memory_order_relaxed);
+  laser_on_.store(laser_cmd_ && power_ > 0, std::memory_order_relaxed);
 }
 
 void SimScanner::halt() noexcept {
   trail_.flush();
-  halted_ = true;
+  halted_.store(true, std::memory_order_release);
   laser_cmd_ = false;
   power_ = 0;
   lit_ref_ = 0;
   was_lit_ = false;
+  laser_on_.store(false, std::memory_order_release);
 }
 
 // One sub-step of one axis: the servo asks for the velocity that closes the tracking error in
@@ -115,6 +284,9 @@ void SimScanner::follow(const ScanSample& s) {
   }
   cmd_ = to;
   ++samples_;
+  if (options_.trace)
+    trace_.push_back({static_cast<double>(samples_) * options_.tick_s, s.x_mm, s.y_mm, s.laser,
+                      static_cast<float>(axis_[0].x), static_cast<float>(axis_[1].x)});
 }
 
 void SimScanner::record_lit(Vec2 p0, Vec2 p1, bool lit) {
@@ -123,18 +295,36 @@ void SimScanner::record_lit(Vec2 p0, Vec2 p1, bool lit) {
     was_lit_ = false;
     return;
   }
+  lit_stale_ = true;
   if (!was_lit_) {
-    lit_.runs.push_back({p0, p1});
+    lit_starts_.push_back(lit_points_.size());
+    lit_points_.push_back(p0);
+    lit_points_.push_back(p1);
     was_lit_ = true;
     return;
   }
-  auto& run = lit_.runs.back();
   // Keep the newest position as the run's last point; keep a point behind it only once it is
   // spacing away from its predecessor, so a dwell does not pile up points.
-  if (run.size() >= 2 && norm(run.back() - run[run.size() - 2]) < options_.lit_path_spacing_mm)
-    run.back() = p1;
+  const std::size_t run_size = lit_points_.size() - lit_starts_.back();
+  if (run_size >= 2 &&
+      norm(lit_points_.back() - lit_points_[lit_points_.size() - 2]) < options_.lit_path_spacing_mm)
+    lit_points_.back() = p1;
   else
-    run.push_back(p1);
+    lit_points_.push_back(p1);
+}
+
+const LitPaths& SimScanner::lit_paths() const {
+  if (lit_stale_) {
+    lit_.runs.clear();
+    for (std::size_t r = 0; r < lit_starts_.size(); ++r) {
+      const std::size_t a = lit_starts_[r];
+      const std::size_t b = r + 1 < lit_starts_.size() ? lit_starts_[r + 1] : lit_points_.size();
+      lit_.runs.emplace_back(lit_points_.begin() + static_cast<std::ptrdiff_t>(a),
+                             lit_points_.begin() + static_cast<std::ptrdiff_t>(b));
+    }
+    lit_stale_ = false;
+  }
+  return lit_;
 }
 
 }  // namespace mark

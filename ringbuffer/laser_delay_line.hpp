@@ -14,9 +14,14 @@
 // flush(): the stream end counts as a laser-off edge; the filter emits hold samples at the last
 // position until every pending output pulse has been played, ending with a laser-off sample, so
 // the device is left dark (nothing is emitted if the output is already off with nothing pending).
+//
+// No allocation after construction (it runs on the drain thread): pending pulses live in a ring
+// sized for the worst case. A pulse stays pending until its output ends, off_delay after its
+// input ended; input pulses take at least two ticks each (on, then off), so at most
+// off_delay / 2 + 1 finished pulses and one open pulse are pending at any tick.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <span>
 #include <vector>
 
@@ -31,6 +36,8 @@ class LaserDelayLine : public SampleFilter<ScanSample> {
 
   void apply(std::span<ScanSample> block) override;
   void flush(const ScanSample& last, std::vector<ScanSample>& tail) override;
+  // The flush tail is never longer than the longer delay plus the final off sample.
+  std::size_t max_tail() const override { return std::max(on_delay_, off_delay_) + 2; }
 
   std::size_t on_delay_ticks() const { return on_delay_; }
   std::size_t off_delay_ticks() const { return off_delay_; }
@@ -51,7 +58,14 @@ class LaserDelayLine : public SampleFilter<ScanSample> {
   std::uint64_t now_ = 0;     // stream tick of the next sample
   bool input_on_ = false;     // input laser bit of the previous tick
   bool last_out_ = false;     // output laser bit of the previous tick
-  std::deque<Pulse> pulses_;  // pending output pulses, ordered by start
+  // Pending output pulses, ordered by start: a ring of fixed capacity.
+  std::vector<Pulse> ring_;
+  std::size_t head_ = 0, count_ = 0;
+  Pulse& front() { return ring_[head_]; }
+  Pulse& back() { return ring_[(head_ + count_ - 1) % ring_.size()]; }
+  void push_back(Pulse p);
+  void pop_front() { head_ = (head_ + 1) % ring_.size(), --count_; }
+  void pop_back() { --count_; }
 };
 
 }  // namespace mark

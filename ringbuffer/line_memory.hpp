@@ -2,7 +2,7 @@
 // The line memory of the seed: a single-producer single-consumer queue of samples that the
 // locus generator writes while the drain reads it out at a fixed rate. Built on
 // boost::lockfree::spsc_queue. The producer waits while the memory is full; no sample is ever
-// dropped or reordered. close() marks the end of the job; abort() wakes and stops both sides.
+// dropped or reordered. close() marks the end of the job; abort() wakes and stops both sides; reset() re-arms it.
 //
 // Threading: push*/close() from the one producer thread, pop() from the one consumer thread;
 // fill(), peak_fill(), closed(), aborted(), abort() from anywhere.
@@ -54,6 +54,17 @@ class LineMemory {
 
   // Anyone: stop both sides now; a waiting push returns false, the drain halts its device.
   void abort() { aborted_.store(true, std::memory_order_release); }
+
+  // Empty the memory and clear close / abort for the next job (a station reuses one memory
+  // for months). Only while neither the producer nor the consumer is using it.
+  void reset() {
+    queue_.reset();
+    pushed_.store(0, std::memory_order_relaxed);
+    popped_.store(0, std::memory_order_relaxed);
+    peak_fill_.store(0, std::memory_order_relaxed);
+    closed_.store(false, std::memory_order_relaxed);
+    aborted_.store(false, std::memory_order_release);
+  }
 
   // Consumer: take up to out.size() samples, oldest first; returns how many. Never waits.
   std::size_t pop(std::span<T> out) {

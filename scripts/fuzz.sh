@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the parser fuzz targets (font loaders, head profile) with clang, AddressSanitizer and UBSan (in build-fuzz/, or
+# Builds the parser fuzz targets (font loaders, job files, head profiles) with clang, AddressSanitizer
+# and UBSan (in build-fuzz/, or
 # $MARKER_FUZZ_BUILD) and runs each for SECONDS (default 20). Exits non-zero, naming the crashing
 # input, if any target finds a crash, a sanitizer report, a leak or a broken invariant.
 #   scripts/fuzz.sh [SECONDS]
@@ -11,18 +12,19 @@ build=${MARKER_FUZZ_BUILD:-$root/build-fuzz}
 
 CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DMARKER_FUZZ=ON -DMARKER_TESTS=ON -DMARKER_BENCH=OFF >/dev/null
-ninja -C "$build" fuzz_jhf fuzz_lff fuzz_cxf fuzz_head_profile
+ninja -C "$build" fuzz_jhf fuzz_lff fuzz_cxf fuzz_job fuzz_head_profile
 
 # Seeds: our fixtures and a few small real fonts. The corpus directories persist between runs.
 declare -A seeds=(
   [jhf]="$root/tests/fonts/data/*.jhf /usr/share/hershey-fonts/rowmans.jhf /usr/share/hershey-fonts/markers.jhf"
   [lff]="$root/tests/fonts/data/*.lff /usr/share/librecad/fonts/standard.lff /usr/share/librecad/fonts/greekp.lff"
   [cxf]="$root/tests/fonts/data/*.cxf"
-  [head_profile]="$root/tests/fuzz/seeds/head_profile_*.json"
+  [job]="$root/tests/fuzz/job-seeds/*.json"
+  [head_profile]="$root/tests/fuzz/head_profile-seeds/*.json"
 )
 
 status=0
-for format in jhf lff cxf head_profile; do
+for format in jhf lff cxf job head_profile; do
   corpus="$build/fuzz-corpus/$format"
   artifacts="$build/fuzz-artifacts/$format"
   mkdir -p "$corpus" "$artifacts"

@@ -1,13 +1,19 @@
 #!/usr/bin/env bash
-# Builds the ringbuffer test suite with ThreadSanitizer and runs it: the line-memory stress
-# test and the drain tests exercise the producer/consumer pair and the drain thread, and TSan
-# fails the run on any data race. Usage: scripts/tsan.sh [build-dir] (default build-tsan).
+# ThreadSanitizer over everything that runs two threads: the ring buffer suite (line memory
+# stress, drain), and from the engine the job runner's threaded paths — real-time jobs, stop
+# requests from another thread, command-level jobs with their abort watcher, Ctrl-C on the real
+# binary — each repeated, so a rare interleaving has several chances to show. TSan fails the run
+# on the first data race. Usage: scripts/tsan.sh [build-dir] [repeats] (default build-tsan, 3).
 set -euo pipefail
 src="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$src/build-tsan}"
+repeats="${2:-3}"
 cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMARKER_TSAN=ON \
   -DMARKER_BENCH=OFF >/dev/null
-ninja -C "$build" ringbuffer_tests
+ninja -C "$build" ringbuffer_tests marker_tests marker
 # halt_on_error: the first race fails the run; second_deadlock_stack for readable reports.
-TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}" \
-  "$build/tests/ringbuffer_tests"
+export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
+"$build/tests/ringbuffer_tests" --gtest_repeat="$repeats" --gtest_brief=1
+"$build/tests/marker_tests" --gtest_repeat="$repeats" --gtest_brief=1 \
+  --gtest_filter='JobSafety.*:JobEndToEnd.RealTime*:DeviceProgram.*:CliMark.CtrlC*'
+echo "tsan: clean over $repeats runs of the threaded tests"

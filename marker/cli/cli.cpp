@@ -5,6 +5,7 @@
 
 #include "fonts/error.hpp"
 #include "marker/cli/commands.hpp"
+#include "marker/cli/interrupt.hpp"
 
 namespace mark::cli {
 
@@ -18,9 +19,16 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  // Ctrl-C / SIGTERM become a stop request the command polls; a command stopped that way
+  // exits 130 with nothing half-done.
+  interrupt_flag().reset();
+  InterruptScope interrupts(interrupt_flag());
   try {
     for (Command& c : commands)
       if (c.parsed()) return c.run();
+  } catch (const Interrupted& e) {
+    std::cerr << "marker: " << e.what() << "\n";
+    return kExitInterrupted;
   } catch (const std::exception& e) {
     std::cerr << "marker: " << e.what() << "\n";
     return 1;

@@ -11,6 +11,9 @@ std::vector<Command> all_commands() {
   c.push_back(make_peen_command());
   c.push_back(make_gcode_command());
   c.push_back(make_tool_measure_command());
+  c.push_back(make_job_command());
+  c.push_back(make_serial_command());
+  c.push_back(make_log_command());
   c.push_back(make_head_command());
   return c;
 }

@@ -29,6 +29,9 @@ Command make_mark_command();
 Command make_peen_command();
 Command make_gcode_command();
 Command make_tool_measure_command();
+Command make_job_command();
+Command make_serial_command();
+Command make_log_command();
 Command make_head_command();
 
 std::vector<Command> all_commands();

@@ -6,6 +6,7 @@
 
 #include "fonts/error.hpp"
 #include "marker/cli/commands.hpp"
+#include "marker/cli/interrupt.hpp"
 #include "marker/cli/gantry_options.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/peen/dot_fonts.hpp"
@@ -102,7 +103,7 @@ int run_peen(const PeenArgs& a) {
   const DotText dots = build_dots(a);
   const Box window = a.window.empty() ? tight_window(dots) : parse_window(a.window);
   require_inside(window, Field{a.layout.field_mm}, "the marking window");
-  const PeenSetup setup{window, gantry, !a.block_straight};
+  const PeenSetup setup{window, gantry, !a.block_straight, &interrupt_flag()};
   const PlannerKind chosen = *parse_planner(a.planner);
 
   PeenPlan plan = plan_peen(dots, chosen, setup);

@@ -1,30 +1,30 @@
 #include "marker/job/job.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <thread>
-#include <vector>
 
 #include "fonts/error.hpp"
+#include "marker/job/device_program.hpp"
 #include "marker/job/intended_strokes.hpp"
 #include "marker/job/job_checks.hpp"
+#include "marker/job/job_run.hpp"
 #include "marker/locus/locus_generator.hpp"
-#include "ringbuffer/drain.hpp"
-#include "ringbuffer/laser_delay_line.hpp"
-#include "ringbuffer/line_memory.hpp"
 
 namespace mark {
-namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
+std::string_view to_string(JobOutcome outcome) {
+  switch (outcome) {
+    case JobOutcome::done: return "done";
+    case JobOutcome::aborted: return "aborted";
+    case JobOutcome::failed: return "failed";
+  }
+  return "?";
 }
 
-}  // namespace
+double seconds_since(JobClock::time_point t0) {
+  return std::chrono::duration<double>(JobClock::now() - t0).count();
+}
 
-CompiledJob compile_job(const JobSpec& spec) {
+CompiledJob compile_job(const JobSpec& spec, DeviceLevel level) {
   if (spec.text.empty()) throw InputError("the text to mark is empty");
   if (!spec.font) throw InputError("no font given for the text to mark");
   check_pen(spec.pen, spec.head);
@@ -33,69 +33,63 @@ CompiledJob compile_job(const JobSpec& spec) {
   // The letters themselves first, so the message says which part leaves the field.
   if (!job.figure.bounds().empty())
     require_inside(job.figure.bounds(), Field{spec.head.field_mm}, "the text layout");
-  job.plan = plan_figure(job.figure, spec.pen, spec.order);
+  job.plan = level == DeviceLevel::commands ? plan_for_device(job.figure, spec.pen, spec.order)
+                                            : plan_figure(job.figure, spec.pen, spec.order);
   check_plan(job.plan, spec.head);
   job.laser_on_ticks = spec.pen.ticks(spec.pen.laser_on_delay_s);
   job.laser_off_ticks = spec.pen.ticks(spec.pen.laser_off_delay_s);
   return job;
 }
 
-JobResult run_job(const JobSpec& spec, const JobOptions& options, Sink<ScanSample>& device) {
+JobResult run_job(const JobSpec& spec, const JobOptions& options, Device& device) {
   JobResult result;
-  // The drain thread is waiting on the line memory before the clock starts, so the compile time
-  // measures the text's way to the first sample and nothing else.
-  LineMemory<ScanSample> memory(options.memory_samples);
-  DrainOptions drain_options;
-  drain_options.rate_hz = 1.0 / spec.pen.tick_s;
-  drain_options.virtual_time = options.virtual_time;
-  // The delay line needs its delays, which come from the compiled pen; it is configured before
-  // the first sample reaches the drain.
-  LaserDelayLine delay(spec.pen.ticks(spec.pen.laser_on_delay_s),
-                       spec.pen.ticks(spec.pen.laser_off_delay_s));
-  Drain<ScanSample> drain(memory, device, drain_options, &delay);
-  drain.start();
+  const DeviceDescription desc = device.describe();
+  const JobClock::time_point t0 = JobClock::now();
+  result.job = compile_job(spec, desc.level);
+  const double compiled_s = seconds_since(t0);
+  if (spec.head.field_mm > desc.field_mm * (1 + 1e-12))
+    throw InputError("the job's field (" + std::to_string(spec.head.field_mm) +
+                     " mm) is larger than the field of device " + desc.name + " (" +
+                     std::to_string(desc.field_mm) + " mm)");
+  // A station reuses its device: one left done / aborted / failed by the last job is re-armed.
+  const DeviceState state = device.status().state;
+  if (state != DeviceState::idle && state != DeviceState::running) device.reset();
 
-  const Clock::time_point t0 = Clock::now();
-  try {
-    result.job = compile_job(spec);
-  } catch (...) {
-    drain.abort();  // the device saw no sample; halt() leaves its laser off
-    drain.join();
-    throw;
+  if (desc.level == DeviceLevel::samples) {
+    auto* samples = dynamic_cast<SampleDevice<ScanSample>*>(&device);
+    if (!samples)
+      throw DeviceFaultError({FaultCategory::device,
+                              desc.name + " takes samples of another kind than scanner samples", 0});
+    device.begin_job(job_header(spec, result.job, desc));
+    run_samples(spec, options, *samples, compiled_s, result);
+  } else {
+    auto* commands = dynamic_cast<CommandDevice*>(&device);
+    if (!commands)
+      throw DeviceFaultError({FaultCategory::device, desc.name + " takes no device commands", 0});
+    run_commands(spec, options, *commands, result);
+    result.compile_time_s = compiled_s;
   }
-  const std::vector<Command>& commands = result.job.plan.commands;
-  LocusGenerator locus(result.job.plan);
-  const std::uint64_t total = options.progress ? LocusGenerator::count_samples(result.job.plan) : 0;
-
-  std::vector<ScanSample> buffer(std::max(options.block, options.first_block));
-  bool first = true;
-  Clock::time_point last_report = Clock::now();
-  while (std::size_t n = locus.generate(buffer.data(), first ? options.first_block : options.block)) {
-    if (!memory.push(std::span<const ScanSample>(buffer.data(), n))) break;  // drain stopped
-    if (first) result.compile_time_s = seconds_since(t0), first = false;
-    if (options.progress && Clock::now() - last_report > std::chrono::milliseconds(100)) {
-      options.progress(drain.samples_out(), total);
-      last_report = Clock::now();
-    }
-  }
-  memory.close();
-  if (options.progress) {
-    while (!memory.aborted() && drain.samples_out() < total) {
-      options.progress(drain.samples_out(), total);
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-  }
-  result.drain = drain.join();
   result.wall_time_s = seconds_since(t0);
-  if (options.progress) options.progress(total, total);
-
   result.glyphs = result.job.figure.glyphs.size();
   result.strokes = result.job.plan.strokes;
-  result.commands = commands.size();
-  result.samples = result.drain.samples_out;
-  result.mark_time_s = static_cast<double>(result.samples) * spec.pen.tick_s;
   result.jump_length_mm = result.job.plan.jump_length_mm;
+  if (result.outcome == JobOutcome::done) result.ink_marked = 1;
   return result;
+}
+
+JobHeader job_header(const JobSpec& spec, const CompiledJob& job, const DeviceDescription& device) {
+  JobHeader h;
+  h.name = spec.text;
+  h.field_mm = spec.head.field_mm;
+  h.pens.push_back(device_pen(job.plan.pen, spec.laser, device.level));
+  if (device.level == DeviceLevel::samples) {
+    // The locus, the delay line's tail (at most the longer delay and its off sample) and the
+    // drain's closing safe sample.
+    h.expected_samples = LocusGenerator::count_samples(job.plan) +
+                         std::max(job.laser_on_ticks, job.laser_off_ticks) + 3;
+    h.lit_paths = intended_polylines(job.figure, 0.05);
+  }
+  return h;
 }
 
 SimScannerOptions simulator_options(const JobSpec& spec) {

@@ -115,8 +115,20 @@ std::vector<std::u32string> split_lines(const std::u32string& text) {
   return lines;
 }
 
+// Appends the glyph at `origin` / `rotation`. When the previous layout had the same shape at
+// the same place at this index (`reuse`), its elements are taken over instead of being
+// transformed again: a serial number that changes its last digits re-places only those.
 void place(Figure& figure, std::size_t shape, std::size_t line, const Point& origin,
-           double rotation) {
+           double rotation, std::vector<PlacedGlyph>& reuse) {
+  const std::size_t index = figure.glyphs.size();
+  if (index < reuse.size()) {
+    PlacedGlyph& old = reuse[index];
+    if (old.shape == shape && old.line == line && old.origin == origin &&
+        old.rotation_rad == rotation && old.code_point == figure.shapes[shape].code_point) {
+      figure.glyphs.push_back(std::move(old));
+      return;
+    }
+  }
   PlacedGlyph g;
   g.code_point = figure.shapes[shape].code_point;
   g.shape = shape;
@@ -140,9 +152,18 @@ double line_width(const Figure& figure, const std::vector<std::size_t>& shapes, 
 }  // namespace
 
 Figure layout_text(std::string_view utf8_text, const StrokeFont& font, const LayoutOptions& o) {
+  Figure figure;
+  relayout_text(utf8_text, font, o, figure);
+  return figure;
+}
+
+void relayout_text(std::string_view utf8_text, const StrokeFont& font, const LayoutOptions& o,
+                   Figure& figure) {
   validate(o);
   const std::u32string text = decode_utf8(utf8_text, "text");
-  Figure figure;
+  std::vector<PlacedGlyph> reuse = std::move(figure.glyphs);
+  figure.glyphs.clear();
+  figure.glyphs.reserve(text.size());
   Shaper shaper(font, o, figure);
   const double pitch = o.line_spacing * font.metrics().line_height * o.height_mm /
                        font.metrics().standard_height;
@@ -164,7 +185,7 @@ Figure layout_text(std::string_view utf8_text, const StrokeFont& font, const Lay
       const double angle = radians(o.angle_deg);
       const Eigen::Rotation2Dd about_base(angle);
       for (std::size_t s : shapes) {
-        place(figure, s, k, o.base + about_base * (Point(x, y) - o.base), angle);
+        place(figure, s, k, o.base + about_base * (Point(x, y) - o.base), angle, reuse);
         x += figure.shapes[s].advance_mm + o.gap_mm;
       }
       continue;
@@ -192,11 +213,10 @@ Figure layout_text(std::string_view utf8_text, const StrokeFont& font, const Lay
       const Point baseline_centre =
           c.center + radius * Point(std::cos(centre_angle), std::sin(centre_angle));
       const Point origin = baseline_centre - Eigen::Rotation2Dd(rotation) * Point(w / 2, 0);
-      place(figure, s, k, origin, rotation);
+      place(figure, s, k, origin, rotation, reuse);
       a += dir * (w + o.gap_mm) / radius;  // Δθ = (W + G) / R
     }
   }
-  return figure;
 }
 
 void require_inside(const Box& bounds, const Field& field, std::string_view what) {

@@ -42,6 +42,12 @@ struct LayoutOptions {
 // Throws InputError for an impossible parameter (non-positive height, width factor or radius,
 // text too long for its circle) and MissingGlyphError for a character the font lacks.
 Figure layout_text(std::string_view utf8_text, const StrokeFont& font, const LayoutOptions& options);
+// Lays `utf8_text` out again into `figure`, which holds an earlier layout with the same font and
+// options (or nothing): characters already shaped are not shaped again, and glyphs that keep
+// their character and place keep their elements — only what changed is transformed. The result
+// equals layout_text()'s. Same errors; on an error `figure` is left empty of glyphs.
+void relayout_text(std::string_view utf8_text, const StrokeFont& font, const LayoutOptions& options,
+                   Figure& figure);
 
 // A square field centred on the origin.
 struct Field {

@@ -64,7 +64,11 @@ PeenPlan plan_peen(const DotText& text, PlannerKind kind, const PeenSetup& setup
   switch (kind) {
     case PlannerKind::snake: return plan_window_snake(text, setup.window);
     case PlannerKind::block: return plan_block_snake(text, setup.window, setup.block_one_axis_at_a_time);
-    case PlannerKind::optimized: return plan_optimized(text, home, setup.gantry);
+    case PlannerKind::optimized: {
+      TourOptions tour;
+      tour.stop = setup.stop;
+      return plan_optimized(text, home, setup.gantry, tour);
+    }
   }
   throw InputError("unknown planner");
 }

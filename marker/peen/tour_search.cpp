@@ -248,6 +248,7 @@ void improve_tour(std::vector<std::size_t>& tour, const MoveCost& cost, std::siz
   const std::size_t kicks = std::min(options.kicks_per_point * n, options.max_kicks);
   std::vector<std::pair<std::size_t, std::size_t>> log;
   for (std::size_t k = 0; k < kicks; ++k) {
+    if (options.stop && options.stop->requested()) throw Interrupted();
     // Cut points i < j < l inside a window: A [i+1..j] [j+1..l] D → A [j+1..l] [i+1..j] D.
     const std::size_t i = random() % n;
     std::size_t j = 1 + random() % (window - 1), l = 1 + random() % (window - 1);

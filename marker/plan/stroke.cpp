@@ -20,7 +20,12 @@ Stroke Stroke::reversed() const {
 
 std::vector<Stroke> strokes_of(const Figure& figure) {
   std::vector<Stroke> strokes;
-  for (std::size_t g = 0; g < figure.glyphs.size(); ++g) {
+  for (std::size_t g = 0; g < figure.glyphs.size(); ++g) append_glyph_strokes(figure, g, strokes);
+  return strokes;
+}
+
+void append_glyph_strokes(const Figure& figure, std::size_t g, std::vector<Stroke>& strokes) {
+  {
     Stroke current;
     current.glyph = g;
     auto flush = [&] {
@@ -42,7 +47,6 @@ std::vector<Stroke> strokes_of(const Figure& figure) {
     }
     flush();
   }
-  return strokes;
 }
 
 }  // namespace mark

@@ -28,5 +28,7 @@ struct Stroke {
 // elements (pen moves inside a glyph) and zero-length elements are dropped: the planner makes
 // its own jumps.
 std::vector<Stroke> strokes_of(const Figure& figure);
+// The strokes of glyph `g` alone, appended to `strokes`.
+void append_glyph_strokes(const Figure& figure, std::size_t g, std::vector<Stroke>& strokes);
 
 }  // namespace mark

@@ -41,11 +41,13 @@ TEST(JobEndToEnd, BlankingMarksTheSerialWithinMeasuredQuality) {
   EXPECT_LT(r.quality->dose_ratio_max, 1.10);
   EXPECT_LT(r.quality->overshoot_um, 2.0);
   EXPECT_EQ(r.drain.underrun_events, 0u);
-  // Device time is the samples handed to the scanner: the locus plus at most the delay line's
-  // tail.
+  // Device time is the samples handed to the scanner: the locus, at most the delay line's tail
+  // and the drain's closing safe sample.
   const std::uint64_t locus = LocusGenerator::count_samples(r.job.plan.commands, 10e-6);
-  EXPECT_GE(r.samples, locus);
-  EXPECT_LE(r.samples, locus + r.job.laser_off_ticks + 1);
+  EXPECT_GE(r.samples, locus + 1);
+  EXPECT_LE(r.samples, locus + r.job.laser_off_ticks + 2);
+  EXPECT_EQ(r.outcome, JobOutcome::done);
+  EXPECT_EQ(r.ink_marked, 1.0);
   EXPECT_DOUBLE_EQ(r.mark_time_s, r.samples * 10e-6);
 }
 

@@ -40,14 +40,6 @@ std::string refusal(F&& f) {
   return "";
 }
 
-class CountingSink : public Sink<ScanSample> {
- public:
-  void write(std::span<const ScanSample> block) override { samples += block.size(); }
-  void halt() noexcept override { halted = true; }
-  std::size_t samples = 0;
-  bool halted = false;
-};
-
 TEST(JobRefusal, EmptyTextAndTextWithNothingToMark) {
   EXPECT_NE(refusal([] { compile_job(spec_for("")); }).find("text to mark is empty"),
             std::string::npos);
@@ -100,14 +92,14 @@ TEST(JobRefusal, TextNearTheEdgeRefusedBeforeTheFirstSample) {
   s.layout.align = Align::right;
   s.layout.base = Point(54.95, 0);  // the letters end just inside the field
   ASSERT_LT(layout_text(s.text, *s.font, s.layout).bounds().max.x(), 55.0);  // the text fits
-  CountingSink sink;
+  SimScanner sim(simulator_options(s));
   JobOptions options;
   options.virtual_time = true;
-  const std::string m = refusal([&] { run_job(s, options, sink); });
+  const std::string m = refusal([&] { run_job(s, options, sim); });
   EXPECT_NE(m.find("figure plus blanking lines"), std::string::npos) << m;
   EXPECT_NE(m.find("leaves the field"), std::string::npos) << m;
-  EXPECT_EQ(sink.samples, 0u);  // the device never saw a sample
-  EXPECT_TRUE(sink.halted);     // and its laser was told to stay off
+  EXPECT_EQ(sim.samples(), 0u);  // the device never saw a sample
+  EXPECT_EQ(sim.status().state, DeviceState::idle);  // nor was a job begun on it
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
-// The drain: fixed blocks in order, underrun holds with the laser off at the last position,
-// virtual time that waits instead of underrunning, end-of-job flush of the delay line, halting
-// the device on abort and on a device fault.
+// The drain: fixed blocks in order; an underrun is a fault that puts the laser out for the rest of
+// the job; a stop request is honoured within one block with a safe sample; every ending leaves
+// the device on a safe sample; the delay line's tail is flushed; a device fault halts the device;
+// injected starvation and stop points act at the exact sample; drain and memory are re-armable.
 #include "ringbuffer/drain.hpp"
 
 #include <gtest/gtest.h>
@@ -25,7 +26,13 @@ std::vector<ScanSample> ramp(std::size_t n, std::size_t first = 0) {
   return s;
 }
 
-TEST(Drain, VirtualTimeDeliversEverythingInFixedBlocks) {
+// No lit sample at or after `from`.
+void expect_dark_from(const std::vector<ScanSample>& samples, std::size_t from) {
+  for (std::size_t i = from; i < samples.size(); ++i)
+    ASSERT_FALSE(samples[i].laser) << "sample " << i << " is lit after the laser should be out";
+}
+
+TEST(Drain, VirtualTimeDeliversEverythingInFixedBlocksThenASafeSample) {
   LineMemory<ScanSample> memory(4096);
   RecordingSink<ScanSample> sink;
   const auto in = ramp(1050);
@@ -34,15 +41,18 @@ TEST(Drain, VirtualTimeDeliversEverythingInFixedBlocks) {
   Drain<ScanSample> drain(memory, sink, {.block_samples = 100, .virtual_time = true});
   drain.start();
   const DrainStats st = drain.join();
-  ASSERT_EQ(sink.samples.size(), 1050u);
+  ASSERT_EQ(sink.samples.size(), 1051u);
   for (std::size_t i = 0; i < in.size(); ++i) ASSERT_EQ(sink.samples[i].x_mm, in[i].x_mm);
-  EXPECT_EQ(sink.block_sizes.size(), 11u);
-  EXPECT_EQ(sink.block_sizes.back(), 50u);  // the last block is not padded
-  EXPECT_EQ(st.samples_out, 1050u);
-  EXPECT_EQ(st.blocks, 11u);
+  // The job ends on its safe sample: the last position, laser off.
+  EXPECT_FALSE(sink.samples.back().laser);
+  EXPECT_EQ(sink.samples.back().x_mm, 1049.0f);
+  ASSERT_EQ(sink.block_sizes.size(), 12u);
+  EXPECT_EQ(sink.block_sizes[10], 50u);  // the last block of the job is not padded
+  EXPECT_EQ(sink.block_sizes[11], 1u);   // the safe sample
+  EXPECT_EQ(st.samples_out, 1051u);
+  EXPECT_EQ(st.end, DrainEnd::completed);
   EXPECT_EQ(st.underrun_events, 0u);
   EXPECT_EQ(st.peak_fill, 1050u);
-  EXPECT_FALSE(st.aborted);
   EXPECT_FALSE(sink.halted);
 }
 
@@ -57,53 +67,86 @@ TEST(Drain, VirtualTimeWaitsForASlowProducerWithoutUnderrun) {
   }
   memory.close();
   const DrainStats st = drain.join();
-  ASSERT_EQ(sink.samples.size(), 500u);
+  ASSERT_EQ(sink.samples.size(), 501u);
   for (std::size_t i = 0; i < 500; ++i) ASSERT_EQ(sink.samples[i].x_mm, static_cast<float>(i));
+  EXPECT_EQ(st.end, DrainEnd::completed);
   EXPECT_EQ(st.underrun_events, 0u);
-  EXPECT_EQ(st.underrun_samples, 0u);
-  for (std::size_t i = 0; i + 1 < sink.block_sizes.size(); ++i) EXPECT_EQ(sink.block_sizes[i], 10u);
+  for (std::size_t i = 0; i + 2 < sink.block_sizes.size(); ++i) EXPECT_EQ(sink.block_sizes[i], 10u);
 }
 
-TEST(Drain, RealTimeUnderrunHoldsTheLastPositionWithTheLaserOff) {
+TEST(Drain, RealTimeUnderrunPutsTheLaserOutForTheRestOfTheJob) {
   LineMemory<ScanSample> memory(4096);
   RecordingSink<ScanSample> sink;
-  // 100 kHz, 1 ms blocks. 150 samples, then the producer stalls for ≥ 3 blocks.
+  // 100 kHz, 1 ms blocks. 150 samples, then the producer stalls: block 2 is half empty.
   Drain<ScanSample> drain(memory, sink, {.rate_hz = 100000, .block_samples = 100});
   const auto first = ramp(150), second = ramp(120, 150);
   ASSERT_TRUE(memory.push(std::span<const ScanSample>(first)));
   drain.start();
-  while (drain.samples_out() < 500) std::this_thread::sleep_for(std::chrono::microseconds(200));
-  ASSERT_TRUE(memory.push(std::span<const ScanSample>(second)));
-  memory.close();
-  const DrainStats st = drain.join();
+  const DrainStats st = drain.join();  // the underrun ends the job on its own
+  // The producer comes back too late: the memory refuses, nothing resumes.
+  EXPECT_FALSE(memory.push(std::span<const ScanSample>(second)));
 
-  // Every real sample arrives, in order; everything else is a hold sample: the last real
-  // position before it, laser off.
-  std::size_t real = 0, holds = 0;
-  ScanSample last{};
-  for (const ScanSample& s : sink.samples) {
-    if (real < 270 && s.laser && s.x_mm == static_cast<float>(real)) {
-      last = s;
-      ++real;
-      continue;
-    }
-    ++holds;
-    EXPECT_FALSE(s.laser);
-    EXPECT_EQ(s.x_mm, last.x_mm);
-    EXPECT_EQ(s.y_mm, last.y_mm);
-  }
-  EXPECT_EQ(real, 270u);
-  EXPECT_GE(holds, 350u);  // block 2 half empty, then ≥ 3 empty blocks
-  EXPECT_EQ(st.underrun_samples, holds);
-  EXPECT_GE(st.underrun_events, 1u);
-  EXPECT_EQ(st.samples_out, sink.samples.size());
-  // The hold right after the stall sits at sample 149, where the producer stopped.
-  EXPECT_FALSE(sink.samples[150].laser);
+  EXPECT_EQ(st.end, DrainEnd::underrun);
+  EXPECT_EQ(st.stop_sample, 150u);  // the first missing sample
+  EXPECT_EQ(st.underrun_events, 1u);
+  EXPECT_EQ(st.underrun_samples, 50u);
+  ASSERT_EQ(sink.samples.size(), 200u);  // two full blocks: 150 real, 50 safe
+  for (std::size_t i = 0; i < 150; ++i) ASSERT_TRUE(sink.samples[i].laser);
+  expect_dark_from(sink.samples, 150);
+  // The safe samples hold the last real position, where the producer stopped.
   EXPECT_EQ(sink.samples[150].x_mm, 149.0f);
-  // Blocks are always full in real time except the very last one.
-  for (std::size_t i = 0; i + 1 < sink.block_sizes.size(); ++i) EXPECT_EQ(sink.block_sizes[i], 100u);
+  EXPECT_EQ(sink.samples[199].x_mm, 149.0f);
+  EXPECT_TRUE(sink.halted);
   EXPECT_GE(st.lateness_max_us, st.lateness_p99_us);
   EXPECT_GE(st.lateness_p99_us, st.lateness_median_us);
+}
+
+TEST(Drain, InjectedStarvationIsAnUnderrunAtThatSampleInVirtualTimeToo) {
+  LineMemory<ScanSample> memory(4096);
+  RecordingSink<ScanSample> sink;
+  const auto in = ramp(1000);
+  ASSERT_TRUE(memory.push(std::span<const ScanSample>(in)));
+  memory.close();
+  Drain<ScanSample> drain(memory, sink, {.block_samples = 100, .virtual_time = true, .starve_at = 437});
+  drain.start();
+  const DrainStats st = drain.join();
+  EXPECT_EQ(st.end, DrainEnd::underrun);
+  EXPECT_EQ(st.stop_sample, 437u);
+  ASSERT_EQ(sink.samples.size(), 500u);
+  for (std::size_t i = 0; i < 437; ++i) ASSERT_TRUE(sink.samples[i].laser);
+  expect_dark_from(sink.samples, 437);
+  EXPECT_EQ(sink.samples.back().x_mm, 436.0f);
+  EXPECT_TRUE(sink.halted);
+}
+
+TEST(Drain, StarvationPointAfterTheEndOfTheJobIsNoUnderrun) {
+  LineMemory<ScanSample> memory(4096);
+  RecordingSink<ScanSample> sink;
+  const auto in = ramp(300);
+  ASSERT_TRUE(memory.push(std::span<const ScanSample>(in)));
+  memory.close();
+  Drain<ScanSample> drain(memory, sink, {.block_samples = 100, .starve_at = 300});
+  drain.start();
+  const DrainStats st = drain.join();
+  EXPECT_EQ(st.end, DrainEnd::completed);
+  EXPECT_EQ(sink.samples.size(), 301u);
+}
+
+TEST(Drain, InjectedStopActsAtTheExactSampleWithASafeSample) {
+  LineMemory<ScanSample> memory(4096);
+  RecordingSink<ScanSample> sink;
+  const auto in = ramp(1000);
+  ASSERT_TRUE(memory.push(std::span<const ScanSample>(in)));
+  memory.close();
+  Drain<ScanSample> drain(memory, sink, {.block_samples = 100, .virtual_time = true, .stop_at = 321});
+  drain.start();
+  const DrainStats st = drain.join();
+  EXPECT_EQ(st.end, DrainEnd::cancelled);
+  EXPECT_EQ(st.stop_sample, 321u);
+  ASSERT_EQ(sink.samples.size(), 322u);
+  expect_dark_from(sink.samples, 321);
+  EXPECT_EQ(sink.samples[321].x_mm, 320.0f);
+  EXPECT_TRUE(sink.halted);
 }
 
 TEST(Drain, RealTimeWaitsForTheStartFillBeforeTheClockStarts) {
@@ -119,8 +162,8 @@ TEST(Drain, RealTimeWaitsForTheStartFillBeforeTheClockStarts) {
   }
   memory.close();
   const DrainStats st = drain.join();
-  EXPECT_EQ(st.underrun_samples, 0u);
-  EXPECT_EQ(sink.samples.size(), 300u);
+  EXPECT_EQ(st.end, DrainEnd::completed);
+  EXPECT_EQ(sink.samples.size(), 301u);
 }
 
 TEST(Drain, FlushesTheDelayLineSoTheJobEndsDark) {
@@ -133,14 +176,16 @@ TEST(Drain, FlushesTheDelayLineSoTheJobEndsDark) {
   Drain<ScanSample> drain(memory, sink, {.block_samples = 100, .virtual_time = true}, &delay);
   drain.start();
   const DrainStats st = drain.join();
-  ASSERT_EQ(sink.samples.size(), 205u + 8u);  // 7 delayed-off ticks lit + the off sample
+  // 7 delayed-off ticks lit + the off sample of the delay line, then the drain's safe sample.
+  ASSERT_EQ(sink.samples.size(), 205u + 8u + 1u);
   EXPECT_FALSE(sink.samples[0].laser);
   EXPECT_FALSE(sink.samples[1].laser);
   EXPECT_TRUE(sink.samples[2].laser);
   EXPECT_TRUE(sink.samples[211].laser);
+  EXPECT_FALSE(sink.samples[212].laser);
   EXPECT_FALSE(sink.samples.back().laser);
   EXPECT_EQ(sink.samples.back().x_mm, 204.0f);
-  EXPECT_EQ(st.samples_out, 213u);
+  EXPECT_EQ(st.samples_out, 214u);
 }
 
 TEST(Drain, SinkFaultHaltsTheDeviceReleasesTheProducerAndRethrows) {
@@ -165,19 +210,80 @@ TEST(Drain, SinkFaultHaltsTheDeviceReleasesTheProducerAndRethrows) {
   EXPECT_EQ(sink.samples.size(), 30u);
 }
 
-TEST(Drain, AbortHaltsTheDeviceAndStops) {
-  LineMemory<ScanSample> memory(1 << 16);
+TEST(Drain, StopRequestPutsTheLaserOutWithinOneBlockOfTheRequest) {
+  // A long lit job in real time; a stop is requested from another thread at an arbitrary moment.
+  // The drain checks after every wait, so the device gets at most one block after the request
+  // fell on its clock (measured by the drain on the device's own sample clock), then a safe
+  // sample, then halt.
+  for (const std::size_t block : {100u, 37u}) {
+    LineMemory<ScanSample> memory(1 << 16);
+    RecordingSink<ScanSample> sink;
+    StopFlag stop;
+    Drain<ScanSample> drain(memory, sink, {.block_samples = block, .stop = &stop});
+    const auto in = ramp(50000);  // 0.5 s of samples, never closed
+    ASSERT_TRUE(memory.push(std::span<const ScanSample>(in)));
+    drain.start();
+    while (drain.samples_out() < 1234) std::this_thread::sleep_for(std::chrono::microseconds(130));
+    stop.request();
+    const DrainStats st = drain.join();
+    EXPECT_EQ(st.end, DrainEnd::cancelled);
+    EXPECT_TRUE(sink.halted);
+    EXPECT_GE(st.stop_sample, 1234u);
+    EXPECT_LE(st.stop_latency_samples, block) << "block " << block;
+    EXPECT_GE(st.stop_latency_us, 0.0);
+    ASSERT_EQ(sink.samples.size(), st.stop_sample + 1);
+    EXPECT_EQ(st.stop_sample % block, 0u);  // stopped at a block boundary, not mid-block
+    expect_dark_from(sink.samples, st.stop_sample);
+  }
+}
+
+TEST(Drain, StopRequestedBeforeTheFirstSampleSendsOnlyTheSafeSample) {
+  LineMemory<ScanSample> memory(1024);
   RecordingSink<ScanSample> sink;
-  Drain<ScanSample> drain(memory, sink, {.block_samples = 100});
-  const auto in = ramp(20000);  // 200 ms of samples, never closed
+  StopFlag stop;
+  stop.request();
+  Drain<ScanSample> drain(memory, sink, {.block_samples = 100, .stop = &stop});
+  const auto in = ramp(500);
   ASSERT_TRUE(memory.push(std::span<const ScanSample>(in)));
   drain.start();
-  while (drain.samples_out() < 300) std::this_thread::sleep_for(std::chrono::microseconds(200));
-  drain.abort();
   const DrainStats st = drain.join();
-  EXPECT_TRUE(st.aborted);
-  EXPECT_TRUE(sink.halted);
-  EXPECT_LT(sink.samples.size(), 20000u);
+  EXPECT_EQ(st.end, DrainEnd::cancelled);
+  EXPECT_EQ(st.stop_sample, 0u);
+  ASSERT_EQ(sink.samples.size(), 1u);
+  EXPECT_FALSE(sink.samples[0].laser);
+}
+
+TEST(Drain, DrainAndMemoryRunASecondJobAfterAnUnderrun) {
+  // A station runs for months: after a faulted job, reset the memory and start the drain again.
+  LineMemory<ScanSample> memory(4096);
+  RecordingSink<ScanSample> sink;
+  Drain<ScanSample> drain(memory, sink, {.block_samples = 100, .virtual_time = true, .starve_at = 50});
+  const auto job = ramp(120);
+  ASSERT_TRUE(memory.push(std::span<const ScanSample>(job)));
+  memory.close();
+  drain.start();
+  EXPECT_EQ(drain.join().end, DrainEnd::underrun);
+  EXPECT_FALSE(memory.push(job[0]));  // aborted until reset
+
+  memory.reset();
+  sink = RecordingSink<ScanSample>();
+  Drain<ScanSample> next(memory, sink, {.block_samples = 100, .virtual_time = true});
+  ASSERT_TRUE(memory.push(std::span<const ScanSample>(job)));
+  memory.close();
+  next.start();
+  const DrainStats st = next.join();
+  EXPECT_EQ(st.end, DrainEnd::completed);
+  EXPECT_EQ(st.samples_out, 121u);
+  EXPECT_EQ(memory.pushed(), 120u);
+
+  // The same drain object re-arms too.
+  memory.reset();
+  sink = RecordingSink<ScanSample>();
+  ASSERT_TRUE(memory.push(std::span<const ScanSample>(job)));
+  memory.close();
+  next.start();
+  EXPECT_EQ(next.join().samples_out, 121u);
+  EXPECT_EQ(sink.samples.size(), 121u);
 }
 
 TEST(Drain, SafeScanSampleHoldsThePositionWithTheLaserOff) {

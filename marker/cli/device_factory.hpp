@@ -1,0 +1,24 @@
+#pragma once
+// `--device` on the command line: which device a job runs on. "sim" (the default) is the
+// simulated scanner for the job's head and tick; further kinds are added here as drivers land.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "driver/device.hpp"
+#include "marker/job/job.hpp"
+
+namespace mark::cli {
+
+// Settings that only the simulated scanner has.
+struct SimSettings {
+  std::uint64_t fault_at = UINT64_MAX;  // --inject fault@N
+  bool trace = false;                   // --trace FILE.csv
+};
+
+// The device named by `spec` for this job. Throws InputError naming the option and the kinds
+// known.
+std::unique_ptr<Device> open_device(const std::string& spec, const JobSpec& job,
+                                    const SimSettings& sim);
+
+}  // namespace mark::cli

@@ -1,0 +1,32 @@
+#pragma once
+// Ctrl-C and SIGTERM become a stop request while a job runs: the handler only sets a StopFlag
+// (async-signal-safe), the drain puts the laser out within one block and the command reports
+// where it stopped and exits 130. Outside the scope the previous handlers are back.
+#include <csignal>
+
+#include "ringbuffer/stop_flag.hpp"
+
+namespace mark::cli {
+
+class InterruptScope {
+ public:
+  explicit InterruptScope(StopFlag& flag);
+  ~InterruptScope();
+  InterruptScope(const InterruptScope&) = delete;
+  InterruptScope& operator=(const InterruptScope&) = delete;
+
+  // The signal that requested the stop (SIGINT, SIGTERM), or 0.
+  int signal() const;
+
+ private:
+  struct sigaction old_int_{}, old_term_{};
+};
+
+// The stop flag of the running command: cli::run() installs an InterruptScope on it around
+// every command, so Ctrl-C reaches whatever the command polls (a job's drain, a planner).
+StopFlag& interrupt_flag();
+
+// Exit status of a command stopped by a signal: 128 + SIGINT, as shells report it.
+inline constexpr int kExitInterrupted = 130;
+
+}  // namespace mark::cli

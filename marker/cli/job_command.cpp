@@ -1,0 +1,259 @@
+// `marker job check FILE [--set NAME=VALUE ...] [--json]`: validates a job file and prints what
+// its next part would look like (every object laid out and planned, nothing marked, no store
+// opened, nothing written).
+// `marker job new -o FILE --text TEMPLATE [layout, pen and counter options]`: writes a job file
+// from command-line options, so nobody has to write JSON by hand to start.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "fonts/error.hpp"
+#include "marker/cli/commands.hpp"
+#include "marker/cli/layout_options.hpp"
+#include "marker/cli/production_options.hpp"
+#include "marker/job/part_texts.hpp"
+#include "marker/vars/clock.hpp"
+
+namespace mark::cli {
+namespace {
+
+struct CheckArgs {
+  std::string file;
+  std::vector<std::string> sets;
+  bool json = false;
+};
+
+struct NewArgs {
+  std::string output;
+  std::string text;
+  std::string object = "text";
+  LayoutArgs layout;
+  std::string head = "SL10";
+  double spot_um = 40;
+  std::string pen = "default";
+  std::string corner = "blanking";
+  double speed_mm_s = 1000;
+  std::optional<double> jump_speed_mm_s, tick_us;
+  double power_pct = 100, frequency_khz = 30, pulse_width_ns = 0;
+  int passes = 1;
+  long long start = 1, step = 1, marks_per_serial = 1;
+  int width = 0;
+  std::optional<long long> limit;
+  std::string at_limit = "stop", alphabet = "decimal", padding = "keep", reset = "never";
+  std::string time_zone = "local";
+  std::string shifts;  // "A=06:00,B=14:00"
+  std::vector<std::string> vars;
+  bool force = false;
+};
+
+int run_check(const CheckArgs& a) {
+  const JobFile job = read_job_file(a.file);
+  const auto variables = job_variables(job, parse_sets(a.sets));
+  std::vector<std::string> warnings;
+  const JobFonts fonts(job, &warnings);
+  for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
+  // The first part of a fresh store: every counter at its start (the store, if any, is not
+  // read: checking a job touches nothing but the job and its fonts).
+  const SysTime now = SystemClock().now();
+  std::map<std::string, std::int64_t> serials;
+  for (const auto& [name, spec] : job.used_counters()) serials[name] = spec.start;
+  auto vars = variables;
+  for (const std::string& v : job.required_variables()) vars[v] = "<" + v + ">";
+  const std::vector<ObjectText> texts = render_objects(job, vars, now, serials);
+
+  nlohmann::json out = {{"job", job.job_name}, {"file", a.file}, {"head", job.head.name},
+                        {"field_mm", job.head.field_mm}, {"spot_diameter_um", job.spot_diameter_um},
+                        {"objects", nlohmann::json::array()}, {"serials", serials},
+                        {"required_variables", job.required_variables()}};
+  double total_s = 0;
+  for (std::size_t i = 0; i < job.objects.size(); ++i) {
+    const JobObject& o = job.objects[i];
+    const JobPen& pen = job.pens.at(o.pen);
+    CompiledJob compiled;
+    try {
+      compiled = compile_job(object_spec(job, o, texts[i].text, fonts));
+    } catch (const InputError& e) {
+      throw InputError(a.file + ": objects[" + std::to_string(i) + "] \"" + o.name + "\": " + e.what());
+    }
+    // Pulses land v/f apart; overlap against the spot (dynamics.md §4.2).
+    const double spacing_um = pen.motion.mark_speed_mm_s / (pen.laser.frequency_khz * 1e3) * 1e3;
+    const double overlap = 1 - spacing_um / job.spot_diameter_um;
+    const double duration_s = compiled.plan.duration_s() * pen.passes;
+    total_s += duration_s;
+    const Box b = compiled.figure.bounds();
+    out["objects"].push_back({{"name", o.name}, {"kind", o.kind}, {"pen", o.pen},
+                              {"text", texts[i].text}, {"glyphs", compiled.figure.glyphs.size()},
+                              {"strokes", compiled.plan.strokes},
+                              {"planned_time_s", duration_s},
+                              {"bounds_mm", {b.min.x(), b.min.y(), b.max.x(), b.max.y()}},
+                              {"power_pct", pen.laser.power_pct},
+                              {"frequency_khz", pen.laser.frequency_khz},
+                              {"pulse_width_ns", pen.laser.pulse_width_ns},
+                              {"passes", pen.passes},
+                              {"pulse_spacing_um", spacing_um}, {"pulse_overlap", overlap}});
+  }
+  out["planned_time_s"] = total_s;
+  if (a.json) {
+    std::cout << out.dump() << "\n";
+    return 0;
+  }
+  std::printf("%s: job \"%s\" on %s (field %.0f mm, spot %.0f µm): %zu object(s), planned %.3f s a part\n",
+              a.file.c_str(), job.job_name.c_str(), job.head.name.c_str(), job.head.field_mm,
+              job.spot_diameter_um, job.objects.size(), total_s);
+  for (const auto& o : out["objects"]) {
+    std::string text = o["text"].get<std::string>();
+    for (char& c : text)
+      if (c == '\n') c = '|';
+    std::printf("  %-10s pen %-8s \"%s\": %d glyphs, %d strokes, %.3f s; %.0f %% at %.0f kHz, "
+                "pulses %.1f µm apart (overlap %.0f %%)%s\n",
+                o["name"].get<std::string>().c_str(), o["pen"].get<std::string>().c_str(),
+                text.c_str(), o["glyphs"].get<int>(), o["strokes"].get<int>(),
+                o["planned_time_s"].get<double>(), o["power_pct"].get<double>(),
+                o["frequency_khz"].get<double>(), o["pulse_spacing_um"].get<double>(),
+                100 * o["pulse_overlap"].get<double>(),
+                o["pulse_overlap"].get<double>() < 0 ? " — separate dots" : "");
+  }
+  for (const auto& [name, value] : serials) std::printf("  counter %s starts at %lld\n", name.c_str(), static_cast<long long>(value));
+  for (const std::string& v : job.required_variables())
+    std::printf("  variable %s has no default: mark with --set %s=VALUE\n", v.c_str(), v.c_str());
+  std::printf("ok\n");
+  return 0;
+}
+
+nlohmann::ordered_json new_job_json(const NewArgs& a) {
+  nlohmann::ordered_json layout = {{"template", a.text}, {"pen", a.pen}};
+  const LayoutArgs& l = a.layout;
+  layout["font"] = l.font;
+  layout["height_mm"] = l.height_mm;
+  if (l.width_factor != 1) layout["width_factor"] = l.width_factor;
+  if (l.gap_mm != 0) layout["gap_mm"] = l.gap_mm;
+  if (l.line_spacing != 1) layout["line_spacing"] = l.line_spacing;
+  if (l.align != "left") layout["align"] = l.align;
+  layout["x_mm"] = l.x_mm;
+  layout["y_mm"] = l.y_mm;
+  if (l.angle_deg != 0) layout["angle_deg"] = l.angle_deg;
+  if (l.italic_deg != 0) layout["italic_deg"] = l.italic_deg;
+  if (l.mirror) layout["mirror"] = true;
+  if (l.replace_missing) layout["replace_missing"] = true;
+  if (!l.circle.empty()) {
+    const LayoutOptions o = to_layout_options(l);
+    nlohmann::ordered_json c = {{"cx_mm", o.circle->center.x()}, {"cy_mm", o.circle->center.y()},
+                        {"radius_mm", o.circle->radius_mm}, {"inside", o.circle->inside}};
+    if (o.circle->start_angle_deg) c["start_angle_deg"] = *o.circle->start_angle_deg;
+    layout["circle"] = c;
+  }
+  nlohmann::ordered_json object = {{"name", a.object}, {"kind", "text"}};
+  object.update(layout);
+
+  nlohmann::ordered_json pen = {{"corner", a.corner}, {"speed_mm_s", a.speed_mm_s},
+                        {"power_pct", a.power_pct}, {"frequency_khz", a.frequency_khz},
+                        {"pulse_width_ns", a.pulse_width_ns}, {"passes", a.passes}};
+  if (a.jump_speed_mm_s) pen["jump_speed_mm_s"] = *a.jump_speed_mm_s;
+  if (a.tick_us) pen["tick_us"] = *a.tick_us;
+
+  nlohmann::ordered_json job = {{"format", kJobFormat},
+                        {"name", std::filesystem::path(a.output).stem().string()},
+                        {"device", "sim"},
+                        {"head", {{"model", a.head}, {"spot_diameter_um", a.spot_um}}},
+                        {"field_mm", l.field_mm},
+                        {"time_zone", a.time_zone}};
+  if (!a.shifts.empty()) {
+    nlohmann::ordered_json shifts = nlohmann::ordered_json::array();
+    std::size_t pos = 0;
+    while (pos <= a.shifts.size()) {
+      const std::size_t end = std::min(a.shifts.find(',', pos), a.shifts.size());
+      const std::string item = a.shifts.substr(pos, end - pos);
+      const std::size_t eq = item.find('=');
+      if (eq == std::string::npos)
+        throw InputError("--shifts '" + a.shifts + "': expected CODE=HH:MM,… e.g. A=06:00,B=14:00,C=22:00");
+      shifts.push_back({{"code", item.substr(0, eq)}, {"start", item.substr(eq + 1)}});
+      pos = end + 1;
+    }
+    job["shifts"] = shifts;
+  }
+  const auto vars = parse_sets(a.vars);
+  if (!vars.empty()) job["variables"] = nlohmann::ordered_json(vars);
+  nlohmann::ordered_json counters = nlohmann::ordered_json::object();
+  for (const std::string& name : TextTemplate::parse(a.text, "--text").counters()) {
+    nlohmann::ordered_json c = {{"start", a.start}, {"step", a.step}, {"width", a.width},
+                        {"padding", a.padding}, {"alphabet", a.alphabet}, {"at_limit", a.at_limit},
+                        {"marks_per_serial", a.marks_per_serial}, {"reset", a.reset}};
+    if (a.limit) c["limit"] = *a.limit;
+    counters[name] = c;
+  }
+  if (!counters.empty()) job["counters"] = counters;
+  job["pens"] = {{a.pen, pen}};
+  job["objects"] = nlohmann::json::array({object});
+  return job;
+}
+
+int run_new(const NewArgs& a) {
+  if (std::filesystem::exists(a.output) && !a.force)
+    throw InputError(a.output + " exists; give --force to replace it");
+  const std::string text = new_job_json(a).dump(2) + "\n";
+  parse_job(text, a.output);  // what we write must read back: the same checks as any job file
+  // Written to a temporary name and renamed, so a reader never sees half a job.
+  const std::string tmp = a.output + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) throw InputError(a.output + ": cannot write the job file");
+  }
+  std::filesystem::rename(tmp, a.output);
+  std::printf("wrote %s\n", a.output.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command make_job_command() {
+  auto check = std::make_shared<CheckArgs>();
+  auto created = std::make_shared<NewArgs>();
+  auto subs = std::make_shared<std::pair<CLI::App*, CLI::App*>>();
+  return Command(
+      [=](CLI::App& app) {
+        auto* job = app.add_subcommand("job", "job files: check one, or write a new one");
+        job->require_subcommand(1);
+        auto* c = job->add_subcommand("check", "validate a job file and show what its next part would be");
+        c->add_option("file", check->file, "job file (.json)")->required();
+        c->add_option("--set", check->sets, "variable value NAME=VALUE (repeatable)");
+        c->add_flag("--json", check->json, "print one JSON object");
+        auto* n = job->add_subcommand("new", "write a job file from command-line options");
+        NewArgs& a = *created;
+        n->add_option("-o,--output", a.output, "job file to write")->required();
+        n->add_option("--text", a.text, "template: text with {serial}, {date:%y%j}, {var:lot}, {shift}")->required();
+        n->add_option("--name", a.object, "the object's name")->capture_default_str();
+        add_layout_options(*n, a.layout);
+        n->add_option("--head", a.head, "scan head: SL10, SL14, cheap, SA14")->capture_default_str();
+        n->add_option("--spot", a.spot_um, "focused spot diameter, µm")->capture_default_str();
+        n->add_option("--pen", a.pen, "the pen's name")->capture_default_str();
+        n->add_option("--corner", a.corner, "corner strategy: blanking, delays, none")->capture_default_str();
+        n->add_option("--speed", a.speed_mm_s, "marking speed, mm/s")->capture_default_str();
+        n->add_option("--jump-speed", a.jump_speed_mm_s, "jump speed, mm/s (default: the head's)");
+        n->add_option("--tick", a.tick_us, "locus tick, µs (default 10)");
+        n->add_option("--power", a.power_pct, "laser power, %")->capture_default_str();
+        n->add_option("--frequency", a.frequency_khz, "pulse frequency, kHz")->capture_default_str();
+        n->add_option("--pulse-width", a.pulse_width_ns, "MOPA pulse width, ns (0: the source's default)")->capture_default_str();
+        n->add_option("--passes", a.passes, "times each object is marked")->capture_default_str();
+        n->add_option("--start", a.start, "counters: first value")->capture_default_str();
+        n->add_option("--step", a.step, "counters: step (negative counts down)")->capture_default_str();
+        n->add_option("--width", a.width, "counters: digits (0: as many as needed)")->capture_default_str();
+        n->add_option("--limit", a.limit, "counters: last value");
+        n->add_option("--at-limit", a.at_limit, "counters: stop or wrap")->capture_default_str();
+        n->add_option("--alphabet", a.alphabet, "counters: decimal, hex, base36, base33")->capture_default_str();
+        n->add_option("--padding", a.padding, "counters: keep, suppress, blank")->capture_default_str();
+        n->add_option("--marks-per-serial", a.marks_per_serial, "counters: parts per value")->capture_default_str();
+        n->add_option("--reset", a.reset, "counters: never, midnight, shift")->capture_default_str();
+        n->add_option("--time-zone", a.time_zone, "dates, shifts and resets: local, UTC or e.g. Europe/Berlin")->capture_default_str();
+        n->add_option("--shifts", a.shifts, "shift codes and start times: A=06:00,B=14:00,C=22:00");
+        n->add_option("--var", a.vars, "variable default NAME=VALUE (repeatable)");
+        n->add_flag("--force", a.force, "replace an existing file");
+        *subs = {c, n};
+        return job;
+      },
+      [=] { return subs->first->parsed() ? run_check(*check) : run_new(*created); });
+}
+
+}  // namespace mark::cli

@@ -1,0 +1,162 @@
+#include "marker/job/device_program.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <variant>
+
+#include "fonts/error.hpp"
+#include "fonts/overloaded.hpp"
+
+namespace mark {
+namespace {
+
+// Uniform parameter steps along an arc or ellipse arc whose chords deviate from the curve by at
+// most `tol`: a chord over Δt of a curve whose second derivative (per unit of the angle
+// parameter) is at most R deviates by at most R·Δt²/8, and R ≤ the larger radius.
+std::size_t chord_count(const Element& e, double tol_mm) {
+  const auto [reach, sweep] = std::visit(
+      Overloaded{[](const Line&) { return std::pair{0.0, 0.0}; },
+                 [](const CircularArc& a) { return std::pair{a.radius, a.sweep}; },
+                 [](const EllipticalArc& a) { return std::pair{std::max(a.rx, a.ry), a.sweep}; }},
+      e.geometry());
+  if (reach <= 0) return 1;
+  const double step = std::sqrt(8 * std::max(tol_mm, 1e-7) / reach);
+  return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(std::abs(sweep) / step)));
+}
+
+class Builder {
+ public:
+  Builder(const DeviceDescription& device, DeviceProgram& out) : device_(device), out_(out) {}
+
+  void jump(const Point& p, double speed) { push(DeviceCommand::jump_to(p.x(), p.y(), speed), false, 0); }
+
+  void mark(const Element& e, double speed) {
+    if (e.kind() == ElementKind::line) {
+      const Point p = e.end();
+      push(DeviceCommand::mark_to(p.x(), p.y(), speed), true, e.length());
+      return;
+    }
+    if (e.kind() == ElementKind::arc && device_.arcs) {
+      const auto& a = std::get<CircularArc>(e.geometry());
+      check(e.point_at(0.5));  // an arc's bulge can leave the field even when its ends do not
+      const Point p = e.end();
+      push(DeviceCommand::arc_to(p.x(), p.y(), a.center.x(), a.center.y(), a.sweep, speed), true,
+           e.length());
+      return;
+    }
+    const std::size_t n = chord_count(e, device_.chord_tolerance_mm);
+    Point prev = e.start();
+    for (std::size_t k = 1; k <= n; ++k) {
+      const Point p = e.point_at(static_cast<double>(k) / n);
+      push(DeviceCommand::mark_to(p.x(), p.y(), speed), true, (p - prev).norm());
+      prev = p;
+    }
+    out_.chords += n;
+  }
+
+  void laser_off_line(const Element& e, double speed) {
+    // Blanking lines are straight; anything else unlit is flattened like a lit curve.
+    const std::size_t n = e.kind() == ElementKind::line ? 1 : chord_count(e, device_.chord_tolerance_mm);
+    for (std::size_t k = 1; k <= n; ++k) jump(e.point_at(static_cast<double>(k) / n), speed);
+  }
+
+  void dwell(double seconds, bool laser) { push(DeviceCommand::dwell_for(seconds, laser), false, 0); }
+  void pen(std::uint16_t index) { push(DeviceCommand::select_pen(index), false, 0); }
+
+ private:
+  void check(const Point& p) const {
+    const double half = device_.field_mm / 2;
+    if (std::isfinite(p.x()) && std::isfinite(p.y()) && std::abs(p.x()) <= half &&
+        std::abs(p.y()) <= half)
+      return;
+    char msg[240];
+    std::snprintf(msg, sizeof msg,
+                  "%s: command %zu goes to (%.4f, %.4f) mm, outside the field ±%.3f mm; nothing "
+                  "was sent",
+                  device_.name.c_str(), out_.commands.size(), p.x(), p.y(), half);
+    throw DeviceFaultError({FaultCategory::out_of_field, msg, out_.commands.size()});
+  }
+  void push(const DeviceCommand& c, bool lit, double length) {
+    if (c.op == DeviceOp::jump || c.op == DeviceOp::mark || c.op == DeviceOp::arc)
+      check(Point(c.x_mm, c.y_mm));
+    out_.commands.push_back(c);
+    if (lit) out_.lit_length_mm += length;
+    out_.ink_after.push_back(out_.lit_length_mm);
+  }
+
+  const DeviceDescription& device_;
+  DeviceProgram& out_;
+};
+
+}  // namespace
+
+Plan plan_for_device(const Figure& figure, const Pen& pen, StrokeOrder order) {
+  // Look-ahead and feed-forward shape the 10 µs samples themselves; a board with its own clock
+  // ramps its own speeds and drives its servo itself.
+  if (pen.lookahead || pen.feed_forward())
+    throw InputError("look-ahead and feed-forward need a sample-level device: a command-level "
+                     "board runs its own clock and speed ramps");
+  Pen p = pen;
+  if (p.corner == CornerStrategy::delays) p.corner = CornerStrategy::none;  // the board waits
+  Plan plan = plan_figure(figure, p, order);
+  plan.pen = pen;  // the delays the board will apply, reported with the plan
+  return plan;
+}
+
+DevicePen device_pen(const Pen& pen, const LaserSettings& laser, DeviceLevel level) {
+  DevicePen d;
+  d.mark_speed_mm_s = pen.mark_speed_mm_s;
+  d.jump_speed_mm_s = pen.jump_speed_mm_s;
+  d.laser = laser;
+  if (level == DeviceLevel::samples) return d;  // the host's delay line and dwells do it
+  d.laser_on_delay_s = pen.laser_on_delay_s;
+  d.laser_off_delay_s = pen.laser_off_delay_s;
+  if (pen.corner == CornerStrategy::delays) {
+    d.jump_delay_s = pen.jump_delay_s;
+    d.mark_delay_s = std::max(pen.mark_delay_s, pen.laser_off_delay_s);
+    d.polygon_delay_s = pen.polygon_delay_s;
+  }
+  return d;
+}
+
+DeviceProgram device_program(const Plan& plan, const LaserSettings& laser,
+                             const DeviceDescription& device) {
+  DeviceProgram out;
+  out.pen = device_pen(plan.pen, laser, DeviceLevel::commands);
+  out.commands.reserve(plan.commands.size() + 1);
+  out.ink_after.reserve(plan.commands.size() + 2);
+  Builder b(device, out);
+  b.pen(0);
+  for (const Command& c : plan.commands) {
+    switch (c.role) {
+      case CommandRole::stroke:
+        if (c.kind == CommandKind::dwell) {
+          b.dwell(c.dwell_ticks * plan.pen.tick_s, c.laser());
+        } else {
+          b.mark(c.path, c.speed_mm_s);
+        }
+        break;
+      case CommandRole::jump:
+        b.jump(c.end(), 0);
+        break;
+      case CommandRole::run_in:
+      case CommandRole::run_out:
+      case CommandRole::blank_join:
+        b.laser_off_line(c.path, c.speed_mm_s);
+        break;
+      case CommandRole::delay:
+        break;  // jump, mark and polygon delays are the board's job (DevicePen)
+    }
+  }
+  return out;
+}
+
+double ink_fraction(const DeviceProgram& program, std::uint64_t done) {
+  if (program.lit_length_mm <= 0) return done >= program.commands.size() ? 1.0 : 0.0;
+  const std::size_t i = static_cast<std::size_t>(
+      std::min<std::uint64_t>(done, program.ink_after.size() - 1));
+  return program.ink_after[i] / program.lit_length_mm;
+}
+
+}  // namespace mark

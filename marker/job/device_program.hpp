@@ -1,0 +1,47 @@
+#pragma once
+// A plan as a command-level device (a vector board with its own clock) takes it: device
+// commands (driver/device_command.hpp) and one DevicePen.
+//
+// The board applies the pen's delays itself, so the host must not also put them in the plan:
+// for the `delays` strategy the plan is made without its dwells (plan_for_device) and the
+// delays go to the board as DevicePen parameters; for `blanking` the laser-off run-in, run-out
+// and joining lines stay in the plan as jumps at their planned speed (a laser-off line at speed
+// is what a board executes as a jump with its jump speed set) and the board gets the τ laser
+// delays with zero jump / mark / polygon delays, so nothing waits between a run-in and its
+// stroke. Lit arcs and ellipse arcs become chords within the device's chord tolerance unless the
+// device takes circular arcs.
+#include <cstdint>
+#include <vector>
+
+#include "driver/device.hpp"
+#include "marker/layout/figure.hpp"
+#include "marker/plan/plan.hpp"
+
+namespace mark {
+
+struct DeviceProgram {
+  std::vector<DeviceCommand> commands;
+  DevicePen pen;
+  double lit_length_mm = 0;   // ink: the length of every lit command
+  std::size_t chords = 0;     // lit arcs flattened into this many straight marks
+  // ink_after[k]: lit length of the first k commands (k = 0 … commands.size()).
+  std::vector<double> ink_after{0.0};
+};
+
+// The plan a command-level device should receive for this figure and pen: the same strokes and
+// blanking lines, without the host's delay dwells.
+Plan plan_for_device(const Figure& figure, const Pen& pen, StrokeOrder order);
+
+// The device pen for a host pen and its laser settings, at a device level: sample-level devices
+// get the laser settings only (the host applies delays), command-level devices the delays too.
+DevicePen device_pen(const Pen& pen, const LaserSettings& laser, DeviceLevel level);
+
+// Converts the plan. Every end point (and every chord point) is checked against the device's
+// field before anything is returned: throws DeviceFaultError (out_of_field) naming the point.
+DeviceProgram device_program(const Plan& plan, const LaserSettings& laser,
+                             const DeviceDescription& device);
+
+// Fraction of the program's ink (lit length) in its first `done` commands.
+double ink_fraction(const DeviceProgram& program, std::uint64_t done);
+
+}  // namespace mark

@@ -1,0 +1,85 @@
+// A job on a command-level device (a vector board): the plan becomes device commands, checked
+// against the device's field before begin_job, submitted in chunks; a watcher turns a stop
+// request into device.abort() whether the board is taking commands or finishing them.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+#include "fonts/error.hpp"
+#include "marker/job/device_program.hpp"
+#include "marker/job/job_run.hpp"
+
+namespace mark {
+
+void run_commands(const JobSpec& spec, const JobOptions& options, CommandDevice& device,
+                  JobResult& result) {
+  if (options.inject.kind == Injection::Kind::underrun)
+    throw InputError("--inject underrun applies to sample-level devices; " +
+                     device.describe().name + " runs its own clock");
+  const DeviceDescription desc = device.describe();
+  const DeviceProgram program = device_program(result.job.plan, spec.laser, desc);
+  JobHeader header = job_header(spec, result.job, desc);
+  header.pens.front() = program.pen;
+  device.begin_job(header);
+
+  std::atomic<bool> finished{false};
+  std::atomic<std::int64_t> aborted_at_ns{0};
+  const auto stop_board = [&] {
+    device.abort();
+    std::int64_t none = 0;
+    aborted_at_ns.compare_exchange_strong(none, StopFlag::now_ns(), std::memory_order_acq_rel);
+  };
+  std::thread watcher;
+  if (options.stop) {
+    watcher = std::thread([&] {
+      while (!finished.load(std::memory_order_acquire)) {
+        if (options.stop->requested()) return stop_board();
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+      }
+    });
+  }
+
+  const std::span<const DeviceCommand> all(program.commands);
+  const std::uint64_t abort_at =
+      options.inject.kind == Injection::Kind::abort ? options.inject.at : all.size() + 1;
+  constexpr std::size_t kChunk = 256;
+  std::optional<DeviceFault> fault;
+  for (std::size_t i = 0; i < all.size();) {
+    if ((options.stop && options.stop->requested()) || i >= abort_at) {
+      stop_board();
+      break;
+    }
+    const std::size_t n = std::min<std::size_t>({kChunk, all.size() - i, abort_at - i});
+    try {
+      device.submit(all.subspan(i, n));
+    } catch (const DeviceFaultError& e) {
+      fault = e.fault();
+      break;
+    }
+    i += n;
+  }
+  result.device = device.end_job();
+  finished.store(true, std::memory_order_release);
+  if (watcher.joinable()) watcher.join();
+
+  result.commands = program.commands.size();
+  result.mark_time_s = result.device.device_time_s;
+  if (!result.device.fault && fault) result.device.fault = fault;
+  switch (result.device.outcome) {
+    case DeviceState::done: result.outcome = JobOutcome::done; break;
+    case DeviceState::failed: result.outcome = JobOutcome::failed; break;
+    default: result.outcome = JobOutcome::aborted; break;
+  }
+  if (result.device.fault) result.outcome = JobOutcome::failed;
+  result.fault = result.device.fault;
+  if (result.outcome != JobOutcome::done) {
+    result.stopped_at = result.device.commands_done;
+    result.ink_marked = ink_fraction(program, result.device.commands_done);
+  }
+  const std::int64_t asked = options.stop ? options.stop->requested_at_ns() : 0;
+  const std::int64_t aborted = aborted_at_ns.load(std::memory_order_acquire);
+  if (asked > 0 && aborted >= asked) result.stop_latency_us = static_cast<double>(aborted - asked) / 1e3;
+}
+
+}  // namespace mark

@@ -1,0 +1,56 @@
+#pragma once
+// Strict reading of one JSON object of a job file: every key a reader asks for is marked used,
+// finish() refuses the rest (a typo must not silently mark with defaults, so it names the key
+// and the closest known one), and every error names the file, the JSON path and the problem:
+// "job.json: objects[2].pen: no pen named \"deep\"".
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mark {
+
+class JsonReader {
+ public:
+  // `j` must outlive the reader. Throws if `j` is not an object.
+  JsonReader(const nlohmann::json& j, std::string file, std::string path);
+
+  const std::string& path() const { return path_; }
+  const std::string& file() const { return file_; }
+  std::string path_of(std::string_view key) const;
+  bool has(std::string_view key);
+  const nlohmann::json* raw(std::string_view key);  // marks it used; nullptr if absent
+
+  std::optional<std::string> string(std::string_view key);
+  // Finite number within [lo, hi] (named with `unit` in the error).
+  std::optional<double> number(std::string_view key, double lo, double hi, std::string_view unit = "");
+  // Whole number within [lo, hi] (64-bit; 1.0 is not accepted for a whole number).
+  std::optional<std::int64_t> integer(std::string_view key, std::int64_t lo, std::int64_t hi);
+  std::optional<bool> boolean(std::string_view key);
+  // One of `choices`.
+  std::optional<std::string> choice(std::string_view key, const std::vector<std::string>& choices);
+  JsonReader object(std::string_view key);  // required to be an object when present
+
+  // Throws for the first key nobody asked for.
+  void finish() const;
+  [[noreturn]] void fail(std::string_view key, const std::string& problem) const;
+  [[noreturn]] void fail_here(const std::string& problem) const;
+
+ private:
+  const nlohmann::json* find(std::string_view key);
+  const nlohmann::json& j_;
+  std::string file_;
+  std::string path_;
+  std::set<std::string, std::less<>> used_;
+};
+
+// "objects[2]" / "pens.deep" style path joins.
+std::string json_path(std::string_view parent, std::string_view key);
+std::string json_index(std::string_view parent, std::size_t index);
+// The closest of `known` to `key` by edit distance (nothing when none is close).
+std::optional<std::string> closest_key(std::string_view key, const std::vector<std::string>& known);
+
+}  // namespace mark

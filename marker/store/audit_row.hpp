@@ -1,0 +1,63 @@
+#pragma once
+// What the serial store records. The audit log is append-only: one row per mark (or re-mark,
+// reservation, counter set), written in the allocation transaction before the laser fires,
+// and one outcome per row, written once afterwards. A row without an outcome belongs to a mark
+// still running — or to a process that died; the next start of that station closes it as
+// aborted, and its numbers stay void.
+#include <cstdint>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mark {
+
+enum class Outcome { done, aborted, failed, reserved };
+
+std::string_view to_string(Outcome o);
+std::optional<Outcome> parse_outcome(std::string_view name);
+
+// What kind of row: a part marked, a part marked again (remark_of links the first), numbers
+// reserved without marking, a counter set by hand.
+enum class AuditKind { mark, remark, reserve, set };
+
+std::string_view to_string(AuditKind k);
+std::optional<AuditKind> parse_audit_kind(std::string_view name);
+
+struct ObjectText {
+  std::string name;
+  std::string text;
+};
+
+// The row written at allocation.
+struct MarkRecord {
+  std::string time_utc;
+  std::string station;
+  std::string job;         // the job file's path as given
+  std::string job_sha256;  // of its bytes
+  AuditKind kind = AuditKind::mark;
+  std::optional<std::int64_t> remark_of;
+  std::vector<ObjectText> objects;     // every object's rendered text, in job order
+  std::map<std::string, std::int64_t> serials;  // counter values consumed
+};
+
+// The row written afterwards.
+struct OutcomeRecord {
+  std::string time_utc;
+  Outcome outcome = Outcome::done;
+  std::string message;                 // the fault or abort reason; empty when done
+  nlohmann::json figures = nlohmann::json::object();  // the device's figures, the quality
+};
+
+struct AuditRow {
+  std::int64_t id = 0;
+  MarkRecord mark;
+  std::optional<OutcomeRecord> outcome;  // nothing: pending
+
+  // The objects' texts joined by new lines (one object: its text).
+  std::string text() const;
+};
+
+}  // namespace mark

@@ -1,0 +1,110 @@
+#include "marker/vars/counter.hpp"
+
+namespace mark {
+
+std::string_view to_string(EndPolicy p) { return p == EndPolicy::stop ? "stop" : "wrap"; }
+
+std::optional<EndPolicy> parse_end_policy(std::string_view name) {
+  if (name == "stop") return EndPolicy::stop;
+  if (name == "wrap") return EndPolicy::wrap;
+  return std::nullopt;
+}
+
+std::string_view to_string(ResetRule r) {
+  switch (r) {
+    case ResetRule::never: return "never";
+    case ResetRule::midnight: return "midnight";
+    case ResetRule::shift: return "shift";
+  }
+  return "?";
+}
+
+std::optional<ResetRule> parse_reset_rule(std::string_view name) {
+  for (ResetRule r : {ResetRule::never, ResetRule::midnight, ResetRule::shift})
+    if (name == to_string(r)) return r;
+  return std::nullopt;
+}
+
+std::int64_t CounterSpec::effective_limit() const {
+  if (limit) return *limit;
+  return step > 0 ? alphabet.max_for_width(width) : 0;
+}
+
+bool CounterSpec::beyond(std::int64_t value) const {
+  if (value < 0) return true;
+  return step > 0 ? value > effective_limit() : value < effective_limit();
+}
+
+void CounterSpec::validate(std::string_view where) const {
+  const std::string w(where);
+  if (step == 0) throw InputError(w + ".step: a counter's step cannot be 0");
+  if (marks_per_serial < 1)
+    throw InputError(w + ".marks_per_serial: must be at least 1, got " + std::to_string(marks_per_serial));
+  if (width < 0 || width > 64)
+    throw InputError(w + ".width: must lie between 0 and 64 digits, got " + std::to_string(width));
+  if (start < 0) throw InputError(w + ".start: a serial number cannot be negative, got " + std::to_string(start));
+  const std::int64_t lim = effective_limit();
+  if (lim < 0) throw InputError(w + ".limit: a serial number cannot be negative, got " + std::to_string(lim));
+  if (step > 0 ? lim < start : lim > start)
+    throw InputError(w + ".limit: " + std::to_string(lim) + " lies behind the start " +
+                     std::to_string(start) + " for a step of " + std::to_string(step));
+  const std::int64_t widest = std::max(lim, start);
+  if (width > 0 && alphabet.digits(widest) > width)
+    throw InputError(w + ".width: " + std::to_string(widest) + " needs " +
+                     std::to_string(alphabet.digits(widest)) + " " + alphabet.name() +
+                     " digits, the width is " + std::to_string(width) +
+                     " (lower the limit or widen the field)");
+}
+
+CounterState CounterState::fresh(const CounterSpec& spec, std::string period) {
+  CounterState s;
+  s.next = spec.start;
+  s.period = std::move(period);
+  return s;
+}
+
+std::string period_key(const CounterSpec& spec, SysTime now, const ShiftTable& shifts) {
+  switch (spec.reset) {
+    case ResetRule::never: return "";
+    case ResetRule::midnight: return local_date_key(spec.time_zone.local_seconds(now));
+    case ResetRule::shift: return shifts.at(spec.time_zone.local_seconds(now)).key;
+  }
+  return "";
+}
+
+Issue take(const CounterSpec& spec, CounterState& state, const std::string& period) {
+  CounterState s = state;
+  if (s.period != period) s = CounterState::fresh(spec, period);
+  if (s.exhausted || spec.beyond(s.next)) {
+    if (spec.at_limit == EndPolicy::stop)
+      throw SerialLimitError("counter '" + spec.name + "' has passed its limit " +
+                             std::to_string(spec.effective_limit()) +
+                             " (at_limit: stop); set it with `marker serial set` or change the job");
+    const std::int64_t cycle = s.cycle + 1;
+    s = CounterState::fresh(spec, period);
+    s.cycle = cycle;
+  }
+  Issue issue{spec.name, s.next, s.used, s.period, s.cycle};
+  if (++s.used >= spec.marks_per_serial) {
+    s.used = 0;
+    std::int64_t next = 0;
+    if (__builtin_add_overflow(s.next, spec.step, &next))
+      s.exhausted = true;  // past INT64_MAX: beyond any limit
+    else
+      s.next = next;
+  }
+  state = std::move(s);
+  return issue;
+}
+
+std::optional<Issue> peek(const CounterSpec& spec, const CounterState& state,
+                          const std::string& period) {
+  CounterState copy = state;
+  try {
+    return take(spec, copy, period);
+  } catch (const SerialLimitError&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace mark

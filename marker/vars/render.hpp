@@ -1,0 +1,33 @@
+#pragma once
+// One part's text from a template: the counter values this part consumed, the clock, the
+// variables set from outside, the shift table.
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "marker/vars/counter.hpp"
+#include "marker/vars/shifts.hpp"
+#include "marker/vars/text_template.hpp"
+#include "marker/vars/time_zone.hpp"
+
+namespace mark {
+
+struct MarkValues {
+  SysTime now{};
+  const TimeZone* zone = nullptr;  // dates and shifts (nullptr: UTC)
+  const ShiftTable* shifts = nullptr;
+  const std::map<std::string, std::string>* variables = nullptr;
+  const std::map<std::string, CounterSpec>* counters = nullptr;
+  const std::map<std::string, std::int64_t>* serials = nullptr;  // values this part consumed
+};
+
+// Appends the rendered text to `out`. Throws InputError naming the field for a variable that
+// was not set, a counter without a value, or {shift} without shifts.
+void render(const TextTemplate& t, const MarkValues& values, std::string& out);
+inline std::string render(const TextTemplate& t, const MarkValues& values) {
+  std::string s;
+  render(t, values, s);
+  return s;
+}
+
+}  // namespace mark

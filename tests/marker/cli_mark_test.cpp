@@ -1,0 +1,156 @@
+// `marker mark` as a user runs it: output paths refused before anything is marked, the trace
+// file, fault injection and its exit status, --require-quality refusing to fire, and Ctrl-C on
+// the real binary: laser off within one drain block, where it stopped, exit status 130.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "tests/marker/cli_runner.hpp"
+
+namespace mark {
+namespace {
+
+using test::fresh_temp_file;
+using test::run_cli;
+
+TEST(CliMark, UnwritableOutputIsRefusedBeforeAnythingIsMarked) {
+  for (const char* option : {"--preview", "--dose-png", "--trace"}) {
+    const auto r = run_cli({"mark", "AB", "--height", "2", "--virtual-time", option,
+                            "/nonexistent-folder/x.png", "--json"});
+    EXPECT_EQ(r.code, 1) << option;
+    EXPECT_EQ(r.out, "") << option << ": nothing was marked, so no figures";
+    EXPECT_EQ(r.err, std::string("marker: ") + option +
+                         " /nonexistent-folder/x.png: cannot write there: No such file or directory\n");
+  }
+}
+
+TEST(CliMark, TraceHasOneRowPerSampleAndTheJobEndsDark) {
+  const auto csv = fresh_temp_file("marker_cli_mark_trace", "trace.csv");
+  const auto r = run_cli({"mark", "L", "--height", "2", "--virtual-time", "--json", "--trace", csv.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "t_s,cmd_x_mm,cmd_y_mm,laser,beam_x_mm,beam_y_mm");
+  std::size_t rows = 0, lit = 0;
+  std::string last;
+  while (std::getline(in, line)) {
+    ++rows;
+    std::stringstream s(line);
+    std::string field;
+    for (int k = 0; k < 4; ++k) std::getline(s, field, ',');
+    lit += field == "1";
+    last = field;
+  }
+  EXPECT_EQ(rows, j["samples"].get<std::size_t>());
+  EXPECT_GT(lit, 100u);
+  EXPECT_EQ(last, "0");
+  // No temporary file is left beside it.
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(csv.parent_path())) ++files;
+  EXPECT_EQ(files, 1u);
+}
+
+TEST(CliMark, InjectedFaultsEndTheJobWithTheirStatusAndSayWhereTheyStopped) {
+  struct Case {
+    const char* inject;
+    int code;
+    const char* outcome;
+    const char* says;
+  };
+  for (const Case& c : {Case{"underrun@900", 1, "failed", "failed (underrun"},
+                        Case{"fault@900", 1, "failed", "failed (device"},
+                        Case{"abort@900", 130, "aborted", "aborted at sample 900"}}) {
+    const auto r = run_cli({"mark", "SN 7", "--height", "2", "--virtual-time", "--json", "--inject", c.inject});
+    EXPECT_EQ(r.code, c.code) << c.inject;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["outcome"], c.outcome);
+    EXPECT_EQ(j["stopped_at"], 900);
+    EXPECT_GT(j["ink_marked"].get<double>(), 0.0);
+    EXPECT_LT(j["ink_marked"].get<double>(), 1.0);
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("% of the ink marked, laser off"), std::string::npos) << r.err;
+  }
+  const auto bad = run_cli({"mark", "A", "--inject", "underrun"});
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.err.find("--inject 'underrun': expected underrun@N"), std::string::npos) << bad.err;
+}
+
+TEST(CliMark, RequireQualityRefusesToFireWhenThePredictionFallsShort) {
+  // 1 mm text at 5 m/s on SL10: the lag rounds every letter off; the simulator says poor.
+  const auto refused = run_cli({"mark", "abc", "--height", "1", "--speed", "5000",
+                                "--virtual-time", "--require-quality", "good", "--json"});
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_EQ(refused.out, "");
+  EXPECT_NE(refused.err.find("--require-quality good: the simulator predicts poor"), std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("nothing was fired"), std::string::npos);
+  const auto fired = run_cli({"mark", "abc", "--height", "3", "--speed", "300", "--virtual-time",
+                              "--require-quality", "high", "--json"});
+  ASSERT_EQ(fired.code, 0) << fired.err;
+  EXPECT_EQ(nlohmann::json::parse(fired.out)["quality"]["class"], "high");
+}
+
+TEST(CliMark, CtrlCPutsTheLaserOutWithinOneBlockAndExits130) {
+  // The real binary in real time, a job of about 5 s; SIGINT once it has been marking for a
+  // while. The drain measures, on the device's own clock, how many samples went out after the
+  // signal: at most one block (100 samples = 1 ms).
+  const std::string binary = std::string(MARKER_BINARY_DIR) + "/marker/marker";
+  const auto out = fresh_temp_file("marker_cli_mark", "interrupted.json");
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    if (!freopen(out.c_str(), "w", stdout)) _exit(99);
+    execl(binary.c_str(), binary.c_str(), "mark", "ABCDEFGHIJKLMNOPQRST", "--height", "2",
+          "--align", "center", "--speed", "50", "--json", static_cast<char*>(nullptr));
+    _exit(98);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));
+  kill(pid, SIGINT);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by the signal instead of stopping the job";
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  std::ifstream in(out);
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["outcome"], "aborted");
+  EXPECT_LE(j["stop_latency_samples"].get<int>(), 100);
+  EXPECT_GT(j["stopped_at"].get<int>(), 0);
+  EXPECT_LT(j["ink_marked"].get<double>(), 1.0);
+  EXPECT_EQ(j["samples"].get<int>(), j["stopped_at"].get<int>() + 1);  // then one safe sample
+}
+
+}  // namespace
+}  // namespace mark
+
+namespace mark {
+namespace {
+
+TEST(CliMark, DefaultSpeedMarksOrdinaryTextAtHighQuality) {
+  // --speed auto (the default) from the tightest curve: 1–5 mm text of capitals, digits and
+  // lower case (the dots of i and j are the tightest curves) is "high" on the simulator; at
+  // the old fixed 1000 mm/s the 1 and 2 mm capitals were "poor".
+  for (const char* text : {"ABC", "SN 2026-000123", "ijk"})
+    for (const char* h : {"1", "2", "3", "5"}) {
+      const auto r = test::run_cli({"mark", text, "--height", h, "--align", "center",
+                                    "--virtual-time", "--json"});
+      ASSERT_EQ(r.code, 0) << r.err;
+      const auto j = nlohmann::json::parse(r.out);
+      EXPECT_EQ(j["quality"]["class"], "high") << text << " at " << h << " mm, " << j["speed_mm_s"];
+      EXPECT_LE(j["speed_mm_s"].get<double>(), 1000.0);
+    }
+  const auto old = test::run_cli({"mark", "ABC", "--height", "1", "--align", "center", "--speed",
+                                  "1000", "--virtual-time", "--json"});
+  EXPECT_EQ(nlohmann::json::parse(old.out)["quality"]["class"], "poor");
+  EXPECT_NE(old.err.find("warning: poor mark predicted"), std::string::npos) << old.err;
+}
+
+}  // namespace
+}  // namespace mark

@@ -1,0 +1,151 @@
+// Laser safety of a whole job on the simulated scanner: an underrun, a stop or a device fault
+// puts the laser out at the sample where it happened and it stays out for the rest of the job;
+// the result says where it stopped and how much ink was marked; the same scanner then runs the
+// next job; a stop requested from another thread in real time is honoured within one drain
+// block of where it fell on the device's clock.
+#include <gtest/gtest.h>
+
+#include <thread>
+
+#include "fonts/catalog.hpp"
+#include "marker/job/head_pen.hpp"
+#include "marker/job/job.hpp"
+#include "marker/locus/locus_generator.hpp"
+
+namespace mark {
+namespace {
+
+JobSpec serial() {
+  JobSpec spec;
+  spec.text = "SN 2026-000123";
+  spec.font = open_font(kBuiltinFontName);
+  spec.layout.height_mm = 3;
+  spec.layout.align = Align::center;
+  spec.head = head_sl10();
+  spec.pen = pen_for_head(spec.head, CornerStrategy::blanking, 800);
+  return spec;
+}
+
+SimScannerOptions traced(const JobSpec& spec, std::uint64_t fault_at = UINT64_MAX) {
+  SimScannerOptions o = simulator_options(spec);
+  o.trace = true;
+  o.fault_at = fault_at;
+  return o;
+}
+
+// Lit samples of the job's locus before `n`, over all of them: what ink_marked must say.
+double expected_ink(const Plan& plan, std::uint64_t n) {
+  LocusGenerator locus(plan.commands, plan.pen.tick_s);
+  std::vector<ScanSample> s(LocusGenerator::count_samples(plan.commands, plan.pen.tick_s));
+  locus.generate(s.data(), s.size());
+  std::uint64_t before = 0, all = 0;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (s[i].laser) ++all, before += i < n;
+  return static_cast<double>(before) / static_cast<double>(all);
+}
+
+// Every trace row from `from` on: laser commanded off.
+void expect_dark_from(const SimScanner& sim, std::uint64_t from) {
+  const auto& rows = sim.trace();
+  ASSERT_GT(rows.size(), from);
+  for (std::size_t i = from; i < rows.size(); ++i)
+    ASSERT_FALSE(rows[i].laser) << "row " << i << " of " << rows.size() << " is lit";
+}
+
+JobResult run_virtual(const JobSpec& spec, SimScanner& sim, Injection inject = {}) {
+  JobOptions o;
+  o.virtual_time = true;
+  o.inject = inject;
+  return run_job_simulated(spec, o, sim);
+}
+
+TEST(JobSafety, UnderrunFailsTheJobDarkFromTheMissingSample) {
+  const JobSpec spec = serial();
+  SimScanner sim(traced(spec));
+  const JobResult r = run_virtual(spec, sim, {Injection::Kind::underrun, 4321});
+  EXPECT_EQ(r.outcome, JobOutcome::failed);
+  ASSERT_TRUE(r.fault);
+  EXPECT_EQ(r.fault->category, FaultCategory::underrun);
+  EXPECT_EQ(r.fault->at, 4321u);
+  EXPECT_EQ(r.stopped_at, 4321u);
+  EXPECT_NEAR(r.ink_marked, expected_ink(r.job.plan, 4321), 1e-12);
+  EXPECT_GT(r.ink_marked, 0.1);
+  EXPECT_LT(r.ink_marked, 0.9);
+  expect_dark_from(sim, 4321);
+  // The scanner's laser is out, and it stays out: nothing lit after the stop reached the part.
+  EXPECT_EQ(sim.laser_power(), 0.0);
+  EXPECT_EQ(r.device.outcome, DeviceState::aborted);  // halted by the drain
+}
+
+TEST(JobSafety, AbortStopsAtTheSampleAndTheNextJobRunsOnTheSameScanner) {
+  const JobSpec spec = serial();
+  SimScanner sim(traced(spec));
+  const JobResult aborted = run_virtual(spec, sim, {Injection::Kind::abort, 2500});
+  EXPECT_EQ(aborted.outcome, JobOutcome::aborted);
+  EXPECT_FALSE(aborted.fault);
+  EXPECT_EQ(aborted.stopped_at, 2500u);
+  EXPECT_EQ(aborted.samples, 2501u);  // the samples before the stop and one safe sample
+  expect_dark_from(sim, 2500);
+  EXPECT_NEAR(aborted.ink_marked, expected_ink(aborted.job.plan, 2500), 1e-12);
+
+  // A station runs for months: the same scanner marks the next part completely, with the
+  // figures of a fresh scanner.
+  const JobResult next = run_virtual(spec, sim);
+  SimScanner fresh(traced(spec));
+  const JobResult reference = run_virtual(spec, fresh);
+  EXPECT_EQ(next.outcome, JobOutcome::done);
+  EXPECT_EQ(next.samples, reference.samples);
+  EXPECT_DOUBLE_EQ(next.quality->coverage, reference.quality->coverage);
+  EXPECT_NEAR(next.quality->max_deviation_um, reference.quality->max_deviation_um, 0.5);
+}
+
+TEST(JobSafety, DeviceFaultIsReportedWithItsCategoryAndTheLaserStaysOff) {
+  const JobSpec spec = serial();
+  SimScanner sim(traced(spec, 3333));
+  const JobResult r = run_virtual(spec, sim);
+  EXPECT_EQ(r.outcome, JobOutcome::failed);
+  ASSERT_TRUE(r.fault);
+  EXPECT_EQ(r.fault->category, FaultCategory::device);
+  EXPECT_EQ(r.stopped_at, 3333u);
+  EXPECT_EQ(sim.samples(), 3333u);  // the faulted sample was never followed
+  EXPECT_EQ(sim.laser_power(), 0.0);
+  EXPECT_EQ(sim.status().state, DeviceState::failed);
+  EXPECT_NE(r.fault->message.find("sample 3333"), std::string::npos) << r.fault->message;
+}
+
+TEST(JobSafety, StopFromAnotherThreadInRealTimeWithinOneBlock) {
+  JobSpec spec = serial();
+  spec.pen = pen_for_head(spec.head, CornerStrategy::blanking, 100);  // ≈ 1 s of marking
+  SimScanner sim(traced(spec));
+  StopFlag stop;
+  JobOptions o;
+  o.stop = &stop;
+  std::thread operator_([&] {
+    while (sim.status().progress < 20000) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    stop.request();
+  });
+  const JobResult r = run_job_simulated(spec, o, sim);
+  operator_.join();
+  EXPECT_EQ(r.outcome, JobOutcome::aborted);
+  EXPECT_GE(r.stopped_at, 20000u);
+  // The drain checks after every wait: at most one block (100 samples = 1 ms) after the request
+  // fell on the device's clock, the laser is out.
+  EXPECT_LE(r.stop_latency_samples, 100u);
+  EXPECT_GE(r.stop_latency_us, 0.0);
+  expect_dark_from(sim, r.stopped_at);
+  EXPECT_LT(r.ink_marked, 1.0);
+}
+
+TEST(JobSafety, DoneJobReportsTheWholeInk) {
+  const JobSpec spec = serial();
+  SimScanner sim(traced(spec));
+  const JobResult r = run_virtual(spec, sim);
+  EXPECT_EQ(r.outcome, JobOutcome::done);
+  EXPECT_EQ(r.ink_marked, 1.0);
+  EXPECT_EQ(sim.trace().size(), r.samples);
+  EXPECT_FALSE(sim.trace().back().laser);  // the closing safe sample
+  EXPECT_EQ(r.device.outcome, DeviceState::done);
+}
+
+}  // namespace
+}  // namespace mark

@@ -1,0 +1,218 @@
+// Never repeat, never lose — under SIGKILL. A child process marks parts in a loop (allocate →
+// mark on the simulated scanner → record the outcome) on one SQLite store; the parent kills it
+// with SIGKILL at a random instant, again and again, then checks the store: no value issued
+// twice, every issued value with exactly one audit row, every value a child was told it got
+// still there, every part a child saw finish recorded done, no row left open, and the counter
+// continuing right after the highest value issued.
+//
+// MARKER_KILLS sets the number of kills (default 400, about 20 s here);
+// scripts/kill-test.sh runs the long version.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/mman.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fcntl.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <random>
+#include <sstream>
+#include <thread>
+
+#include "fonts/catalog.hpp"
+#include "marker/job/head_pen.hpp"
+#include "marker/job/job.hpp"
+#include "marker/store/digest.hpp"
+#include "marker/store/utc_time.hpp"
+#include "store_test_support.hpp"
+
+namespace mark {
+namespace {
+
+enum Phase : int { starting = 0, allocating = 1, marking = 2, recording = 3, between = 4 };
+constexpr const char* kPhaseNames[] = {"start-up and recovery", "allocation", "marking",
+                                       "outcome recording", "between parts"};
+
+struct Shared {
+  std::atomic<int> phase;
+  std::atomic<long long> parts;
+};
+
+// The mark itself: the rendered text on the simulated SL10 head, in virtual time.
+nlohmann::json mark_on_simulator(const std::string& text) {
+  static const std::shared_ptr<const StrokeFont> font = open_font(kBuiltinFontName);
+  JobSpec spec;
+  spec.text = text;
+  spec.font = font;
+  spec.layout.height_mm = 1;
+  spec.head = head_sl10();
+  spec.pen = pen_for_head(spec.head, CornerStrategy::blanking, 1000);
+  JobOptions options;
+  options.virtual_time = true;
+  SimScanner scanner(simulator_options(spec));
+  const JobResult r = run_job_simulated(spec, options, scanner);
+  return {{"samples", r.samples}, {"mark_time_s", r.mark_time_s},
+          {"max_deviation_um", r.quality->max_deviation_um}};
+}
+
+[[noreturn]] void child_loop(const std::string& path, Shared* shared, int out_fd) {
+  shared->phase = starting;
+  MarkContext ctx;
+  ctx.station = "kill-test";
+  ctx.job = "kill.json";
+  ctx.job_sha256 = sha256_hex("kill.json");
+  const std::map<std::string, CounterSpec> counters{{"sn", test::plain_counter()}};
+  const ShiftTable shifts;
+  auto store = open_store(path, StoreAccess::create);
+  mark_on_simulator("SN 0");  // font and code paths warm before the first part
+  ctx.now = SystemClock().now();
+  store->start_station(ctx);
+  auto say = [&](char what, std::int64_t v) {
+    char line[48];
+    const int n = std::snprintf(line, sizeof line, "%c %lld\n", what, static_cast<long long>(v));
+    if (write(out_fd, line, static_cast<std::size_t>(n)) != n) _exit(3);
+  };
+  for (;;) {
+    ctx.now = SystemClock().now();
+    shared->phase = allocating;
+    const Allocation a = store->allocate(counters, shifts, ctx, [](const auto& serials) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%lld", static_cast<long long>(serials.at("sn")));
+      return std::vector<ObjectText>{{"serial", text}};
+    });
+    say('A', a.serials.at("sn"));
+    shared->phase = marking;
+    OutcomeRecord o;
+    o.figures = mark_on_simulator(a.objects[0].text);
+    shared->phase = recording;
+    o.time_utc = format_utc(SystemClock().now());
+    store->record_outcome(a.mark_id, o);
+    shared->phase = between;
+    say('D', a.serials.at("sn"));
+    ++shared->parts;
+  }
+}
+
+int kills_wanted() {
+  const char* env = std::getenv("MARKER_KILLS");
+  return env ? std::max(1, std::atoi(env)) : 400;
+}
+
+TEST(SerialStoreKill, SigkillAtRandomInstantsNeverRepeatsOrLosesANumber) {
+  const auto dir = test::fresh_store_dir("kill");
+  const std::string path = (dir / "kill.serials.sqlite").string();
+  auto* shared = static_cast<Shared*>(
+      mmap(nullptr, sizeof(Shared), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0));
+  ASSERT_NE(shared, MAP_FAILED);
+  new (shared) Shared{};
+
+  const int kills = kills_wanted();
+  std::mt19937 rng(20260305);
+  std::set<std::int64_t> told_allocated, told_done;
+  int by_phase[5] = {};
+  const auto t0 = std::chrono::steady_clock::now();
+  // Calibration: one child runs undisturbed for a while, to learn how long start-up and a part
+  // take. Then a fifth of the kills land uniformly in start-up (recovery), the rest uniformly
+  // over two parts' time after it, so every phase is hit in proportion to its duration.
+  double startup_us = 0, part_us = 0;
+  {
+    const auto c0 = std::chrono::steady_clock::now();
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) child_loop(path, shared, open("/dev/null", O_WRONLY));
+    while (shared->phase.load() == starting) std::this_thread::sleep_for(std::chrono::microseconds(50));
+    const auto c1 = std::chrono::steady_clock::now();
+    const long long p0 = shared->parts.load();
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    const long long p1 = shared->parts.load();
+    kill(pid, SIGKILL);
+    waitpid(pid, nullptr, 0);
+    startup_us = std::chrono::duration<double, std::micro>(c1 - c0).count();
+    part_us = 500e3 / std::max(1LL, p1 - p0);
+  }
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int k = 0; k < kills; ++k) {
+    int fds[2];
+    ASSERT_EQ(pipe(fds), 0);
+    shared->phase = starting;
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      close(fds[0]);
+      try {
+        child_loop(path, shared, fds[1]);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "kill-test child: %s\n", e.what());
+        _exit(2);
+      }
+    }
+    close(fds[1]);
+    if (unit(rng) < 0.2) {
+      std::this_thread::sleep_for(std::chrono::microseconds(static_cast<long>(unit(rng) * startup_us)));
+    } else {
+      while (shared->phase.load() == starting) std::this_thread::sleep_for(std::chrono::microseconds(20));
+      std::this_thread::sleep_for(std::chrono::microseconds(static_cast<long>(unit(rng) * 2 * part_us)));
+    }
+    const int phase = shared->phase.load();
+    kill(pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL)
+        << "the child stopped by itself (status " << status << ") before kill " << k;
+    ++by_phase[phase];
+    std::string said;
+    char buf[4096];
+    for (ssize_t n; (n = read(fds[0], buf, sizeof buf)) > 0;) said.append(buf, static_cast<std::size_t>(n));
+    close(fds[0]);
+    std::istringstream lines(said);
+    char what;
+    long long v;
+    while (lines >> what >> v) (what == 'A' ? told_allocated : told_done).insert(v);
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  auto store = open_store(path, StoreAccess::existing);
+  MarkContext ctx;
+  ctx.station = "kill-test";
+  ctx.now = SystemClock().now();
+  const auto closed = store->start_station(ctx);  // the last child's open row, if any
+  const std::vector<std::int64_t> values = test::check_store_consistent(*store, "sn");
+  ASSERT_FALSE(values.empty());
+  // Consecutive from 1: a transaction a kill interrupted consumed nothing.
+  for (std::size_t i = 0; i < values.size(); ++i) ASSERT_EQ(values[i], static_cast<std::int64_t>(i) + 1);
+  for (std::int64_t v : told_allocated) EXPECT_TRUE(std::binary_search(values.begin(), values.end(), v)) << v;
+  std::map<std::int64_t, Outcome> outcome_of;
+  std::size_t open_rows = 0;
+  for (const AuditRow& r : store->log()) {
+    if (!r.outcome) ++open_rows;
+    else outcome_of[r.mark.serials.at("sn")] = r.outcome->outcome;
+  }
+  EXPECT_EQ(open_rows, 0u);
+  for (std::int64_t v : told_done) EXPECT_EQ(outcome_of[v], Outcome::done) << v;
+  std::size_t done = 0, void_ = 0;
+  for (const auto& [v, o] : outcome_of) (o == Outcome::done ? done : void_) += 1;
+  const Allocation next = store->allocate({{"sn", test::plain_counter()}}, ShiftTable{}, ctx,
+                                          test::render_sn());
+  EXPECT_EQ(next.serials.at("sn"), values.back() + 1);
+
+  std::printf("[kill test] %d SIGKILLs in %.1f s; %zu numbers issued (%zu done, %zu void), "
+              "%zu closed at the end, 0 repeated, 0 lost\n",
+              kills, seconds, values.size(), done, void_, closed.size());
+  std::printf("[kill test] undisturbed: start-up %.1f ms, one part %.1f ms\n", startup_us / 1e3,
+              part_us / 1e3);
+  std::printf("[kill test] kills by phase:");
+  for (int p = 0; p < 5; ++p) std::printf(" %s %d%s", kPhaseNames[p], by_phase[p], p < 4 ? "," : "\n");
+  EXPECT_GT(by_phase[allocating], 0);
+  EXPECT_GT(by_phase[marking], 0);
+  EXPECT_GT(by_phase[recording], 0);
+  munmap(shared, sizeof(Shared));
+  store.reset();
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace mark

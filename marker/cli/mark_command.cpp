@@ -1,6 +1,8 @@
-// `marker mark TEXT [layout options] [--device sim] [--head SL10|SL14|cheap]
-//  [--corner blanking|delays|none] [--speed MM_S] [--preview FILE.png] [--virtual-time] [--json]
-//  [--inject KIND@N] [--trace FILE.csv] [--require-quality high|good]`
+// `marker mark TEXT [layout options] [--device sim] [--head SL10|SL14|cheap|SA14]
+//  [--head-model first|second] [--laser-rise-us US] [--corner blanking|delays|none]
+//  [--speed MM_S|auto] [--lookahead] [--feed-forward] [--head-profile FILE] [pen parameters]
+//  [--preview FILE.png] [--virtual-time] [--json] [--inject KIND@N] [--trace FILE.csv]
+//  [--require-quality high|good]`
 // The main job: real time by default (the drain paced at the tick, so the line memory is written
 // while it is read), quality figures against the laid-out text. Ctrl-C / SIGTERM put the laser
 // out within one drain block; the command then says where it stopped and exits 130.
@@ -20,10 +22,12 @@
 #include "fonts/error.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/device_factory.hpp"
+#include "marker/cli/head_options.hpp"
 #include "marker/cli/inject_option.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/output_file.hpp"
+#include "marker/cli/pen_options.hpp"
 #include "marker/job/auto_speed.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
@@ -36,14 +40,10 @@ struct MarkArgs {
   std::string text;
   LayoutArgs layout;
   std::string device = "sim";
-  std::string head = "SL10";
-  std::string corner = "blanking";
+  HeadArgs head;
+  PenArgs pen;
   std::string order = "glyph";
   std::string speed = "auto";  // mm/s, or auto: from the figure's tightest curve and the head
-  double jump_speed_mm_s = 0;  // 0: the head's default
-  double tick_us = 10;
-  std::optional<double> run_in_mm;
-  std::optional<double> run_out_mm;
   std::string preview;
   std::string dose_png;
   std::string trace;
@@ -55,9 +55,7 @@ struct MarkArgs {
 
 JobSpec make_spec(const MarkArgs& a) {
   JobSpec spec;
-  const auto head = find_head(a.head);
-  if (!head) throw InputError("--head '" + a.head + "' is not one of SL10, SL14, cheap");
-  spec.head = *head;
+  spec.head = simulated_head(a.head);
   if (!(a.layout.field_mm > 0)) throw InputError("--field must be a positive size in mm");
   spec.head.field_mm = a.layout.field_mm;
   Warnings warnings;
@@ -81,14 +79,9 @@ JobSpec make_spec(const MarkArgs& a) {
                        std::to_string(static_cast<int>(spec.head.max_speed_mm_s)) +
                        " mm/s (head " + spec.head.name + ")");
   }
-  spec.pen = pen_for_head(spec.head, parse_corner_strategy(a.corner), speed_mm_s,
-                          a.tick_us * 1e-6);
-  if (a.jump_speed_mm_s != 0) {
-    spec.pen.jump_speed_mm_s = a.jump_speed_mm_s;
-    if (spec.pen.corner == CornerStrategy::blanking) spec.pen.join_speed_mm_s = a.jump_speed_mm_s;
-  }
-  if (a.run_in_mm) spec.pen.run_in_mm = *a.run_in_mm;
-  if (a.run_out_mm) spec.pen.run_out_mm = *a.run_out_mm;
+  PenArgs pen = a.pen;
+  pen.speed_mm_s = speed_mm_s;
+  spec.pen = make_pen(pen, spec.head);
   return spec;
 }
 
@@ -107,6 +100,10 @@ nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobResult& 
                       {"font", a.layout.font},
                       {"height_mm", spec.layout.height_mm},
                       {"head", spec.head.name},
+                      {"head_model", spec.head.second_order ? "second" : "first"},
+                      {"laser_rise_us", a.head.laser_rise_us},
+                      {"lookahead", spec.pen.lookahead || spec.pen.feed_forward()},
+                      {"feed_forward", spec.pen.feed_forward()},
                       {"device", device_name},
                       {"outcome", to_string(r.outcome)},
                       {"ink_marked", r.ink_marked},
@@ -205,13 +202,15 @@ void write_trace(const std::vector<SimTraceRow>& rows, const std::string& path) 
 
 // --require-quality: the simulator predicts the mark (virtual time, no device touched); below
 // the class the job is refused before anything fires.
-void require_quality(const JobSpec& spec, const std::string& name) {
+void require_quality(const JobSpec& spec, const std::string& name, double laser_rise_s) {
   const auto wanted = parse_quality_class(name);
   if (!wanted || *wanted == QualityClass::poor)
     throw InputError("--require-quality '" + name + "' is not one of high, good");
   JobOptions predict;
   predict.virtual_time = true;
-  SimScanner sim(simulator_options(spec));
+  SimScannerOptions o = simulator_options(spec);
+  o.laser_rise_s = laser_rise_s;
+  SimScanner sim(o);
   const JobResult r = run_job_simulated(spec, predict, sim);
   const QualityClass got = classify(*r.quality);
   if (got >= *wanted) return;
@@ -231,11 +230,13 @@ int run_mark(const MarkArgs& a) {
                                      {a.trace, "--trace"}})
     check_output_file(path, option);
   const InjectArg inject = a.inject.empty() ? InjectArg{} : parse_inject(a.inject);
-  if (!a.require_quality.empty()) require_quality(spec, a.require_quality);
+  if (!a.require_quality.empty())
+    require_quality(spec, a.require_quality, a.head.laser_rise_us * 1e-6);
 
   SimSettings sim_settings;
   sim_settings.fault_at = inject.device_fault_at;
   sim_settings.trace = !a.trace.empty();
+  sim_settings.laser_rise_s = a.head.laser_rise_us * 1e-6;
   const std::unique_ptr<Device> device = open_device(a.device, spec, sim_settings);
   auto* scanner = dynamic_cast<SimScanner*>(device.get());
   if (!scanner && (!a.preview.empty() || !a.dose_png.empty() || !a.trace.empty()))
@@ -285,19 +286,13 @@ Command make_mark_command() {
         sub->add_option("text", a->text, "text to mark (UTF-8; \\n starts a new line)")->required();
         add_layout_options(*sub, a->layout);
         sub->add_option("--device", a->device, "device: sim (the simulated scanner)")->capture_default_str();
-        sub->add_option("--head", a->head, "scan head preset: SL10, SL14, cheap")->capture_default_str();
-        sub->add_option("--corner", a->corner, "corner strategy: blanking, delays, none")->capture_default_str();
+        add_head_options(*sub, a->head, true);
         sub->add_option("--order", a->order, "stroke order: glyph, shortest (least jumping)")->capture_default_str();
         sub->add_option("--speed", a->speed,
                         "marking speed, mm/s, or auto: the fastest (up to 1000 mm/s) at which the "
                         "head's lag shrinks the tightest curve by at most 8 µm")
             ->capture_default_str();
-        sub->add_option("--jump-speed", a->jump_speed_mm_s,
-                        "jump speed, mm/s (default: half the head's positioning limit)");
-        sub->add_option("--tick", a->tick_us, "locus tick, µs")->capture_default_str();
-        sub->add_option("--run-in", a->run_in_mm,
-                        "blanking run-in length, mm (default: sized by the head's settling)");
-        sub->add_option("--run-out", a->run_out_mm, "blanking run-out length, mm (default v·τ)");
+        add_pen_options(*sub, a->pen, false);
         sub->add_option("--preview", a->preview,
                         "write the marked result: dose under the planned path (.png or .svg)");
         sub->add_option("--dose-png", a->dose_png, "write the raw dose raster as a PNG");

@@ -25,9 +25,11 @@ double checked(const std::optional<double>& v, const char* option) {
 
 }  // namespace
 
-void add_pen_options(CLI::App& app, PenArgs& a) {
+void add_pen_options(CLI::App& app, PenArgs& a, bool with_speed) {
   app.add_option("--corner", a.corner, "corner strategy: blanking, delays, none")->capture_default_str();
-  app.add_option("--speed", a.speed_mm_s, "marking speed, mm/s (with --lookahead: the most)")->capture_default_str();
+  if (with_speed)
+    app.add_option("--speed", a.speed_mm_s, "marking speed, mm/s (with --lookahead: the most)")
+        ->capture_default_str();
   app.add_option("--jump-speed", a.jump_speed_mm_s, "jump speed, mm/s (default: half the head's positioning limit)");
   app.add_option("--tick", a.tick_us, "locus tick, µs")->capture_default_str();
   app.add_option("--head-profile", a.head_profile,

@@ -30,7 +30,8 @@ struct PenArgs {
       ff_lag_us, ff_inertia_us2;
 };
 
-void add_pen_options(CLI::App& app, PenArgs& args);
+// `with_speed`: whether --speed is one of them (mark has its own, which also takes "auto").
+void add_pen_options(CLI::App& app, PenArgs& args, bool with_speed = true);
 
 // The planner's model: the profile file, or the head's datasheet profile.
 HeadProfile planner_profile(const PenArgs& args, const HeadModel& head);

@@ -18,7 +18,10 @@
 // dark.
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
+#include <utility>
+#include <vector>
 
 #include "marker/locus/ellipse_table.hpp"
 #include "marker/plan/command.hpp"
@@ -47,15 +50,23 @@ class PlannedLocus {
 
  private:
   bool advance();  // the next command that takes time; false at the end
-  void emit(ScanSample& out, double tau);
+  // One sample at local time tau, arc length s and speed v along the current command.
+  template <CommandKind Kind, bool SecondOrder>
+  void emit(ScanSample& out, double tau, double s, double v);
+  template <CommandKind Kind, bool SecondOrder>
+  void emit_run(ScanSample* out, std::uint64_t n);  // n samples of the current command
+  template <bool SecondOrder>
+  void emit_run(ScanSample* out, std::uint64_t n);
 
   std::span<const Command> commands_;
   double tick_s_;
+  double inv_tick_;
   FeedForward ff_;
   std::uint64_t total_ = 0;
   std::uint64_t k_ = 0;          // next sample: time (k_ + 1)·tick
   std::size_t next_ = 0;         // next command to load
   std::size_t last_timed_ = 0;   // the last command that takes time
+  std::vector<double> durations_;  // of every command, s
   double t0_ = 0, t_end_ = 0;    // current command's time span
   double path0_ = 0;             // path length of the job before the current command
   double loaded_length_ = 0;     // the current command's length
@@ -73,9 +84,14 @@ class PlannedLocus {
   SpeedProfile profile_;
   Point p0_{0, 0}, u_{0, 0};     // line: start and unit direction; dwell: the point
   Point center_{0, 0};           // arc
-  double radius_ = 0, angle0_ = 0, turn_ = 1;  // arc: start angle, +1/−1 direction
-  EllipseTable table_;
+  double radius_ = 0, inv_radius_ = 0, angle0_ = 0, turn_ = 1;  // arc: start angle, ±1 direction
+  double arc_s_ = 0, arc_c_ = 1, arc_sn_ = 0;  // arc: the last sample's arc length, cos, sin
+  int arc_steps_ = 0;                           // samples since the last exact sincos
+  const EllipseTable* table_ = nullptr;         // ellipse: its table (around the origin)
   std::size_t cursor_ = 0;
+  std::shared_ptr<const EllipseTable> table_hold_;  // keeps table_ alive
+  static constexpr std::size_t kMaxTables = 256;
+  const EllipseTable& ellipse_table(const EllipticalArc& g);
 };
 
 }  // namespace mark

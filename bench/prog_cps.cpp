@@ -215,6 +215,7 @@ struct Row {
   std::vector<double> x;
   Pen pen;
   int trials = 0;
+  double search_s = 0;  // wall time of the row's search
 };
 
 class Search {
@@ -477,7 +478,15 @@ int main(int argc, char** argv) {
       for (std::size_t k; (k = next++) < order.size();) {
         try {
           Row& high = rows[order[k]];
+          auto started = std::chrono::steady_clock::now();
+          auto lap = [&started] {
+            const auto now = std::chrono::steady_clock::now();
+            const double s = std::chrono::duration<double>(now - started).count();
+            started = now;
+            return s;
+          };
           Search(work, high, quick).run(std::nullopt);
+          high.search_s = lap();
           for (Row& good : rows)
             if (good.seed_row == order[k]) {
               if (high.trial) {
@@ -486,6 +495,7 @@ int main(int argc, char** argv) {
                 good.pen = high.pen;
               }
               Search(work, good, quick).run(high.trial ? std::optional(high.x) : std::nullopt);
+              good.search_s = lap();
             }
         } catch (...) {
           std::lock_guard<std::mutex> lock(mutex);
@@ -516,7 +526,8 @@ int main(int argc, char** argv) {
                             {"cps", r.trial ? r.trial->cps : 0.0},
                             {"ink_bound_ratio", r.trial ? r.trial->cps / bound : 0.0},
                             {"speed_mm_s", r.trial ? r.x[0] : 0.0},
-                            {"trials", r.trials}};
+                            {"trials", r.trials},
+                            {"search_s", r.search_s}};
         if (r.trial) {
           nlohmann::json params = nlohmann::json::object();
           for (std::size_t i = 1; i < r.x.size(); ++i) params[r.strategy->params[i].name] = r.x[i];

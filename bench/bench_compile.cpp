@@ -14,7 +14,7 @@ namespace {
 
 using namespace mark;
 
-JobSpec serial_spec(CornerStrategy corner, double italic_deg) {
+JobSpec serial_spec(CornerStrategy corner, double italic_deg, bool feed_forward = false) {
   JobSpec spec;
   spec.text = "SN2026-11-21-0004711";  // 20 characters
   spec.font = open_font(kBuiltinFontName);
@@ -22,7 +22,9 @@ JobSpec serial_spec(CornerStrategy corner, double italic_deg) {
   spec.layout.align = Align::center;
   spec.layout.italic_deg = italic_deg;
   spec.head = head_sl10();
-  spec.pen = pen_for_head(spec.head, corner, 1000);
+  PenRules rules;
+  rules.feed_forward = feed_forward;
+  spec.pen = pen_for_head(spec.head, corner, feed_forward ? 3000 : 1000, 10e-6, rules);
   return spec;
 }
 
@@ -31,7 +33,7 @@ void compile_to_first_sample(benchmark::State& state, const JobSpec& spec) {
   std::vector<ScanSample> block(256);
   for (auto _ : state) {
     const CompiledJob job = compile_job(spec);
-    LocusGenerator locus(job.plan.commands, spec.pen.tick_s);
+    LocusGenerator locus(job.plan);
     const std::size_t n = locus.generate(block.data(), block.size());
     memory.push(std::span<const ScanSample>(block.data(), n));
     benchmark::DoNotOptimize(memory.pop(std::span<ScanSample>(block)));
@@ -52,5 +54,12 @@ void BM_CompileSerial20BlankingItalic(benchmark::State& state) {
   compile_to_first_sample(state, serial_spec(CornerStrategy::blanking, 12));
 }
 BENCHMARK(BM_CompileSerial20BlankingItalic)->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly(true);
+
+// Look-ahead planning and feed-forward: the speed passes over the whole job and the planned
+// locus's first block.
+void BM_CompileSerial20FeedForward(benchmark::State& state) {
+  compile_to_first_sample(state, serial_spec(CornerStrategy::none, 0, true));
+}
+BENCHMARK(BM_CompileSerial20FeedForward)->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly(true);
 
 }  // namespace

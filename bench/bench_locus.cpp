@@ -2,7 +2,8 @@
 // The generator streams a whole planned job into a reused 4096-sample block, the way the job's
 // producer feeds the line memory. Jobs: the 62 characters of the cps test at 5 mm (blanking pen,
 // 1 m/s: lines, circular and elliptical arcs), the same text in italics (every arc an ellipse),
-// and one kind of element alone.
+// one kind of element alone, and the text with planned speeds (look-ahead, power ∝ speed) with
+// and without feed-forward of a first- and a second-order head model.
 #include <benchmark/benchmark.h>
 
 #include <numbers>
@@ -11,6 +12,7 @@
 #include "fonts/catalog.hpp"
 #include "marker/layout/layout.hpp"
 #include "marker/locus/locus_generator.hpp"
+#include "marker/job/head_pen.hpp"
 #include "marker/plan/plan.hpp"
 
 namespace {
@@ -25,6 +27,38 @@ std::vector<Command> text_job(double italic_deg) {
   const Figure f = layout_text("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789",
                                builtin_font(), options);
   return plan_figure(f, default_pen(CornerStrategy::blanking, 0.12e-3, 1000, 9600)).commands;
+}
+
+// The text planned with look-ahead on SL10 (the datasheet model), optionally fed forward.
+Plan planned_text_job(double italic_deg, bool feed_forward, bool second_order) {
+  LayoutOptions options;
+  options.height_mm = 5;
+  options.align = Align::center;
+  options.italic_deg = italic_deg;
+  const Figure f = layout_text("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789",
+                               builtin_font(), options);
+  HeadModel head = head_sl10();
+  head.second_order = second_order;
+  PenRules r;
+  r.lookahead = true;
+  r.feed_forward = feed_forward;
+  // 1 m/s as the constant-speed jobs above, so both have the same element mix per sample.
+  return plan_figure(f, pen_for_head(head, CornerStrategy::none, 1000, 10e-6, r));
+}
+
+void run_plan(benchmark::State& state, const Plan& plan) {
+  std::vector<ScanSample> block(4096);
+  std::uint64_t samples = 0;
+  for (auto _ : state) {
+    LocusGenerator gen(plan);
+    while (std::size_t n = gen.generate(block.data(), block.size())) {
+      benchmark::DoNotOptimize(block.data());
+      samples += n;
+    }
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(samples));
+  state.counters["samples_per_job"] = static_cast<double>(LocusGenerator::count_samples(plan));
 }
 
 std::vector<Command> repeated(const Element& e, int n) {
@@ -54,6 +88,22 @@ BENCHMARK(BM_LocusText)->Unit(benchmark::kMillisecond);
 
 void BM_LocusItalicText(benchmark::State& state) { run(state, text_job(15)); }
 BENCHMARK(BM_LocusItalicText)->Unit(benchmark::kMillisecond);
+
+void BM_LocusTextPlanned(benchmark::State& state) { run_plan(state, planned_text_job(0, false, false)); }
+BENCHMARK(BM_LocusTextPlanned)->Unit(benchmark::kMillisecond);
+
+void BM_LocusTextFeedForward(benchmark::State& state) { run_plan(state, planned_text_job(0, true, false)); }
+BENCHMARK(BM_LocusTextFeedForward)->Unit(benchmark::kMillisecond);
+
+void BM_LocusTextFeedForwardSecondOrder(benchmark::State& state) {
+  run_plan(state, planned_text_job(0, true, true));
+}
+BENCHMARK(BM_LocusTextFeedForwardSecondOrder)->Unit(benchmark::kMillisecond);
+
+void BM_LocusItalicTextFeedForward(benchmark::State& state) {
+  run_plan(state, planned_text_job(15, true, false));
+}
+BENCHMARK(BM_LocusItalicTextFeedForward)->Unit(benchmark::kMillisecond);
 
 void BM_LocusLines(benchmark::State& state) {
   run(state, repeated(Element::line({-10, -3}, {10, 3}), 100));

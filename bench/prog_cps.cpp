@@ -1,18 +1,26 @@
 // Characters per second, SCANLAB's method (galvo.md §5): the 62 characters A–Z a–z 0–9 in the
-// built-in font at 1 mm cap height, marked on each simulated head with each corner strategy.
-// For two quality levels the fastest marking speed that still meets the level is searched, and
-// the characters per second at that speed are reported in device time. Every trial is a
-// virtual-time run of the whole job: layout, plan, locus, line memory, drain with the laser
-// delay line, simulated scanner, quality figures.
+// built-in font at 1 mm cap height, marked on each simulated head with each strategy. For each
+// quality class (driver/quality_class.hpp) the search finds the highest characters per second
+// that still meets the class, over every parameter the strategy has — the marking speed and its
+// delays, run-ins, rates and thresholds — and prints the parameters it found as `marker mark`
+// options. Every trial is a virtual-time run of the whole job: layout, plan, locus, line memory,
+// drain with the laser delay line, simulated scanner, quality figures.
 //
-//   cps [--short] [--json] [--head NAME] [--strategy NAME]
-//   cps --speed MM_S [--head NAME] [--strategy NAME] [--text T] [--font F] [tuning options]
-// --speed evaluates one speed and prints its quality figures instead of searching.
+// The planner never reads the simulated head's parameters: each head is identified first
+// (`marker head identify`: its response to a test pattern, fitted), and the strategies plan with
+// that fitted profile — in the model-error rows with its lag deliberately off by ±10 %, or with
+// a first-order model of a second-order head.
+//
+//   cps [--short] [--json] [--head NAME] [--strategy NAME] [--workers N]
+//   cps --speed MM_S [--head NAME] [--strategy NAME] [--text T] [--font F]
+// --speed evaluates one speed with each strategy's default parameters instead of searching.
 #include <CLI/CLI.hpp>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -21,37 +29,108 @@
 #include <vector>
 
 #include "driver/head_model.hpp"
+#include "driver/device_error.hpp"
+#include "driver/quality_class.hpp"
 #include "fonts/catalog.hpp"
 #include "fonts/error.hpp"
+#include "marker/cli/pen_options.hpp"
+#include "marker/head/head_fit.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/intended_strokes.hpp"
 #include "marker/job/job.hpp"
+#include "marker/locus/locus_generator.hpp"
+#include "marker/plan/stroke.hpp"
 
 namespace {
 
 using namespace mark;
 
 constexpr const char* kCharacters = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+// SCANLAB's typical marking speed for small characters on 10 mm heads (dynamics.md §1.2): the
+// ink-only bound marks nothing but ink, at this speed, with no jumps or corners.
+constexpr double kInkSpeed_mm_s = 3500;
+constexpr double kTick_s = 10e-6;
+constexpr double kLaserRise_s = 20e-6;  // the laser-rise rows: two ticks
 
-struct Level {
+// A strategy: a corner strategy, whether speeds are planned and the head fed forward, and the
+// parameters the search may change (x[0] is always the marking speed).
+struct Param {
   const char* name;
-  double max_deviation_um;
-  double min_coverage;
-  double max_dose_ratio;
+  double initial, lo, hi;
+  bool zero_ok;  // the search may set it to 0 (below lo)
 };
-constexpr Level kHigh{"high", 10, 0.995, 1.3};
-constexpr Level kGood{"good", 30, 0.98, 2.0};
 
-// The speed search's range: below it no head is worth marking with, above it the heads'
-// tracking lag exceeds the 1 mm letters themselves.
-constexpr double kSlowest_mm_s = 40, kFastest_mm_s = 5000;
-
-struct Setup {
-  HeadModel head;
-  CornerStrategy strategy = CornerStrategy::blanking;
-  PenRules rules;
-  double join_speed_mm_s = 0;  // 0: the pen's default (jump speed); < 0: marking speed
+struct Strategy {
+  std::string name;
+  CornerStrategy corner;
+  bool lookahead, feed_forward;
+  std::vector<Param> params;
+  // Further starting points besides the parameters' initial values (a pattern search finds a
+  // local optimum; gentle and brisk starts find the robust and the fast one).
+  std::vector<std::vector<double>> starts = {};
 };
+
+const Param kSpeed{"speed_mm_s", 300, 20, 20000, false};
+
+std::vector<Strategy> all_strategies() {
+  const Param accel{"accel_share", 0.3, 0.005, 0.95, false};
+  const Param curve{"curve_accel_share", 0.3, 0.005, 0.95, false};
+  const Param jump{"jump_accel_share", 0.8, 0.01, 0.95, false};
+  return {
+      {"blanking", CornerStrategy::blanking, false, false,
+       {{"speed_mm_s", 150, 20, 20000, false},
+        {"min_run_in", 1.0, 0.1, 10, true},
+        {"run_out", 1.0, 0.1, 5, true},
+        {"settle_um", 1.0, 0.05, 20, false},
+        {"blank_angle_deg", 8, 1, 90, true}}},
+      {"delays", CornerStrategy::delays, false, false,
+       {{"speed_mm_s", 60, 20, 20000, false},
+        {"laser_on", 0.6, 0.05, 5, true},
+        {"laser_off", 1.2, 0.05, 5, true},
+        {"jump", 2.0, 0.1, 10, true},
+        {"mark", 1.0, 0.1, 5, true},
+        {"polygon", 0.5, 0.05, 5, true},
+        {"jump_settle_um", 1.0, 0.05, 20, true}}},
+      {"none", CornerStrategy::none, false, false, {{"speed_mm_s", 40, 20, 20000, false}}},
+      {"none+la", CornerStrategy::none, true, false, {kSpeed, accel, curve, jump},
+       {{150, 0.05, 0.05, 0.3}, {600, 0.3, 0.3, 0.8}}},
+      {"none+ff", CornerStrategy::none, true, true,
+       {{"speed_mm_s", 1000, 20, 20000, false}, accel, curve, jump,
+        {"min_lit_speed_share", 0.03, 0.005, 0.5, true}},
+       {{2000, 0.9, 0.9, 0.9, 0.03}, {2000, 0.1, 0.05, 0.3, 0.15}, {1000, 0.05, 0.05, 0.3, 0.1}}},
+      {"blanking+ff", CornerStrategy::blanking, true, true,
+       {kSpeed, accel, curve, jump, {"run_in", 1.0, 0.1, 10, true}, {"run_out", 1.0, 0.1, 10, true}},
+       {{1000, 0.3, 0.3, 0.8, 2, 1}, {300, 0.05, 0.05, 0.3, 3, 1}}},
+  };
+}
+
+// The pen for a point of a strategy's parameter space, planned with `model`.
+Pen pen_at(const Strategy& s, const std::vector<double>& x, const HeadProfile& model) {
+  PenRules r;
+  r.lookahead = s.lookahead;
+  r.feed_forward = s.feed_forward;
+  auto get = [&](const char* name) {
+    for (std::size_t i = 0; i < s.params.size(); ++i)
+      if (std::string(s.params[i].name) == name) return std::optional<double>(x[i]);
+    return std::optional<double>();
+  };
+  if (auto v = get("min_run_in")) r.min_run_in = *v;
+  if (auto v = get("run_out")) r.run_out = *v;
+  if (auto v = get("run_in")) r.run_in = *v;
+  if (auto v = get("settle_um")) r.settle_um = *v;
+  if (auto v = get("blank_angle_deg")) r.blank_angle_deg = *v;
+  if (auto v = get("laser_on")) r.laser_on = *v;
+  if (auto v = get("laser_off")) r.laser_off = *v;
+  if (auto v = get("jump")) r.jump = *v;
+  if (auto v = get("mark")) r.mark = *v;
+  if (auto v = get("polygon")) r.polygon = *v;
+  if (auto v = get("jump_settle_um")) r.jump_settle_um = *v;
+  if (auto v = get("accel_share")) r.accel_share = *v;
+  if (auto v = get("curve_accel_share")) r.curve_accel_share = *v;
+  if (auto v = get("jump_accel_share")) r.jump_accel_share = *v;
+  if (auto v = get("min_lit_speed_share")) r.min_lit_speed_share = *v;
+  return pen_for_profile(model, s.corner, x[0], kTick_s, r);
+}
 
 // The text laid out once; its intended strokes indexed once for every trial.
 struct Workload {
@@ -60,85 +139,227 @@ struct Workload {
   LayoutOptions layout;
   std::unique_ptr<QualityReference> reference;
   double characters = 62;
+  double ink_mm = 0;
 
   Workload(std::string t, const std::string& font_name) : text(std::move(t)) {
     font = open_font(font_name);
     layout.height_mm = 1.0;
     layout.align = Align::center;
-    // Baseline 0.5 mm above the field centre, so no mark falls in x < 0 and y < 0 at once: the
-    // scanner branch's dose raster crashes in its tile (−1, −1), whose key equals its cache
-    // sentinel UINT64_MAX (reported; not ours to change).
     layout.base = Point(0, 0.5);
-    reference = std::make_unique<QualityReference>(
-        intended_polylines(layout_text(text, *font, layout)));
+    const Figure figure = layout_text(text, *font, layout);
+    reference = std::make_unique<QualityReference>(intended_polylines(figure));
+    for (const Stroke& s : strokes_of(figure)) ink_mm += s.length_mm();
     characters = 0;
     for (char c : text) characters += c != ' ' && c != '\n';
   }
+  double ink_bound_cps() const { return characters / (ink_mm / kInkSpeed_mm_s); }
+};
+
+// The simulated head a row marks on: the preset, its servo model, the laser's rise time.
+struct RealHead {
+  HeadModel model;
+  double laser_rise_s = 0;
+  std::string head_model() const { return model.second_order ? "second" : "first"; }
 };
 
 struct Trial {
-  double speed_mm_s = 0;
+  double cps = 0;
   double mark_time_s = 0;
   Quality quality;
 };
 
-Trial mark_at(const Workload& w, const Setup& setup, double speed_mm_s) {
+JobSpec spec_for(const Workload& w, const RealHead& head, const Pen& pen) {
   JobSpec spec;
   spec.text = w.text;
   spec.font = w.font;
   spec.layout = w.layout;
-  spec.head = setup.head;
-  spec.pen = pen_for_head(setup.head, setup.strategy, speed_mm_s, 10e-6, setup.rules);
-  if (setup.join_speed_mm_s < 0) spec.pen.join_speed_mm_s = speed_mm_s;
-  if (setup.join_speed_mm_s > 0) spec.pen.join_speed_mm_s = setup.join_speed_mm_s;
+  spec.head = head.model;
+  spec.pen = pen;
+  return spec;
+}
+
+Trial mark_with(const Workload& w, const RealHead& head, const Pen& pen) {
+  const JobSpec spec = spec_for(w, head, pen);
   JobOptions options;
   options.virtual_time = true;
-  SimScanner scanner(simulator_options(spec));
+  SimScannerOptions sim = simulator_options(spec);
+  sim.laser_rise_s = head.laser_rise_s;
+  SimScanner scanner(sim);
   const JobResult r = run_job_simulated(spec, options, scanner, w.reference.get());
-  return {speed_mm_s, r.mark_time_s, *r.quality};
+  return {w.characters / r.mark_time_s, r.mark_time_s, *r.quality};
 }
 
-bool meets(const Quality& q, const Level& level) {
-  return q.max_deviation_um <= level.max_deviation_um && q.coverage >= level.min_coverage &&
-         q.dose_ratio_max <= level.max_dose_ratio;
-}
-
-// The fastest speed meeting the level, by bisection of log(speed) between the range's ends:
-// `steps` halvings of the ratio 125 leave 1.0 % (9 steps) or 16 % (5, --short) between the
-// reported speed and the first failing one. Quality falls with speed but not strictly
-// monotonically, so this finds a pass/fail boundary, not necessarily the highest passing speed.
-std::optional<Trial> fastest(const Workload& w, const Setup& setup, const Level& level, int steps) {
-  Trial lo = mark_at(w, setup, kSlowest_mm_s);
-  if (!meets(lo.quality, level)) return std::nullopt;
-  const double top = std::min(kFastest_mm_s, setup.head.max_speed_mm_s);
-  Trial hi_trial = mark_at(w, setup, top);
-  if (meets(hi_trial.quality, level)) return hi_trial;
-  double hi = top;
-  for (int i = 0; i < steps; ++i) {
-    const double mid = std::sqrt(lo.speed_mm_s * hi);
-    Trial t = mark_at(w, setup, mid);
-    if (meets(t.quality, level)) lo = t;
-    else hi = mid;
-  }
-  return lo;
+// The job's device time without running it (locus samples plus the laser delay line's tail):
+// a candidate that cannot beat the best so far is never simulated.
+double predicted_cps(const Workload& w, const RealHead& head, const Pen& pen) {
+  const CompiledJob job = compile_job(spec_for(w, head, pen));
+  const double samples = static_cast<double>(LocusGenerator::count_samples(job.plan)) +
+                         static_cast<double>(job.laser_off_ticks);
+  return w.characters / (samples * pen.tick_s);
 }
 
 struct Row {
-  std::string head, strategy, level;
+  std::string head_name;
+  RealHead head;
+  HeadProfile model;        // the planner's model as identified
+  // The planner's lag errors against the identified one that the row must hold at, each a
+  // separate mark: {e} for a model-error row, {0, −0.1, +0.1} for the robust row (one set of
+  // parameters that works whichever way the model is off). The first is the reported pen's.
+  std::vector<double> errors = {0.0};
+  std::string model_note;   // "" or e.g. "first-order model"
+  const Strategy* strategy = nullptr;
+  const QualityLimits* level = nullptr;
+  std::size_t seed_row = SIZE_MAX;  // the good row starts from its high row's result
+  // Results.
   std::optional<Trial> trial;
-  double cps = 0;
+  std::vector<double> x;
+  Pen pen;
+  int trials = 0;
+  double search_s = 0;  // wall time of the row's search
 };
 
-void print_row(const Row& r) {
-  if (!r.trial) {
-    std::printf("%-6s %-9s %-5s %10s %8s   not reached at %.0f mm/s\n", r.head.c_str(),
-                r.strategy.c_str(), r.level.c_str(), "-", "-", kSlowest_mm_s);
-    return;
+class Search {
+ public:
+  Search(const Workload& w, Row& row, bool quick) : w_(w), row_(row), quick_(quick) {}
+
+  void run(std::optional<std::vector<double>> start) {
+    const Strategy& s = *row_.strategy;
+    std::vector<double> x;
+    if (start) {
+      x = *start;
+    } else {
+      // The best feasible of the starting points, each made slower and gentler until the class
+      // is met (or given up on).
+      std::vector<std::vector<double>> starts = {initial(s)};
+      starts.insert(starts.end(), s.starts.begin(), s.starts.end());
+      for (std::vector<double> y : starts) {
+        for (int i = 0; i < 8 && !feasible(y); ++i)
+          for (std::size_t j = 0; j < y.size(); ++j)
+            if (j == 0 || std::string(s.params[j].name).find("share") != std::string::npos)
+              y[j] = std::max(s.params[j].lo, y[j] / 2);
+      }
+      if (!row_.trial) return;
+      x = row_.x;
+    }
+    // Pattern search in log space with shrinking steps: move one parameter at a time, keep
+    // any move that raises the characters per second and still meets the class.
+    const std::vector<double> steps =
+        quick_ ? std::vector<double>{2.0, 1.41} : std::vector<double>{2.0, 1.41, 1.19, 1.09};
+    for (double f : steps) {
+      for (bool improved = true; improved;) {
+        improved = false;
+        for (std::size_t j = 0; j < x.size(); ++j) {
+          for (int dir : {1, -1}) {
+            std::vector<double> y = x;
+            y[j] = moved(s.params[j], x[j], f, dir);
+            if (y[j] == x[j] || !better(y)) continue;
+            x = y;
+            improved = true;
+            break;
+          }
+        }
+      }
+    }
   }
-  const Quality& q = r.trial->quality;
-  std::printf("%-6s %-9s %-5s %10.0f %8.0f   %5.1f / %4.1f / %.4f / %.2f\n", r.head.c_str(),
-              r.strategy.c_str(), r.level.c_str(), r.trial->speed_mm_s, r.cps, q.max_deviation_um,
-              q.rms_deviation_um, q.coverage, q.dose_ratio_max);
+
+ private:
+  static std::vector<double> initial(const Strategy& s) {
+    std::vector<double> x;
+    for (const Param& p : s.params) x.push_back(p.initial);
+    return x;
+  }
+  static double moved(const Param& p, double v, double f, int dir) {
+    if (v == 0) return dir > 0 ? p.lo : 0.0;
+    const double m = dir > 0 ? v * f : v / f;
+    if (m < p.lo) return p.zero_ok ? 0.0 : p.lo;
+    return std::min(m, p.hi);
+  }
+  // Evaluates x (cached); true if it meets the class and beats the best so far.
+  bool better(const std::vector<double>& x) {
+    if (row_.trial) {
+      const Pen pen = pen_at(*row_.strategy, x, row_.model.with_lag_error(row_.errors[0]));
+      double predicted = 0;
+      try {
+        predicted = predicted_cps(w_, row_.head, pen);
+      } catch (const InputError&) {
+        return false;  // outside the head's limits or the field
+      }
+      if (predicted <= row_.trial->cps * 1.001) return false;
+    }
+    return feasible(x);
+  }
+  bool feasible(const std::vector<double>& x) {
+    const auto it = cache_.find(x);
+    if (it != cache_.end()) return false;  // seen: it did not improve then and cannot now
+    std::optional<Trial> t;
+    bool ok = true;
+    for (double e : row_.errors) {
+      std::optional<Trial> one;
+      try {
+        one = mark_with(w_, row_.head, pen_at(*row_.strategy, x, row_.model.with_lag_error(e)));
+      } catch (const InputError&) {
+      } catch (const DeviceError&) {
+      }
+      ++row_.trials;
+      ok = one && meets(one->quality, *row_.level);
+      if (!ok) break;
+      // The row's figures: the worst of its marks.
+      if (!t) {
+        t = one;
+      } else {
+        Quality& q = t->quality;
+        q.max_deviation_um = std::max(q.max_deviation_um, one->quality.max_deviation_um);
+        q.rms_deviation_um = std::max(q.rms_deviation_um, one->quality.rms_deviation_um);
+        q.coverage = std::min(q.coverage, one->quality.coverage);
+        q.dose_ratio_max = std::max(q.dose_ratio_max, one->quality.dose_ratio_max);
+        q.overshoot_um = std::max(q.overshoot_um, one->quality.overshoot_um);
+      }
+    }
+    const Pen pen = pen_at(*row_.strategy, x, row_.model.with_lag_error(row_.errors[0]));
+    cache_[x] = ok;
+    if (ok && (!row_.trial || t->cps > row_.trial->cps)) {
+      row_.trial = t;
+      row_.x = x;
+      row_.pen = pen;
+    }
+    return ok;
+  }
+
+  const Workload& w_;
+  Row& row_;
+  bool quick_;
+  std::map<std::vector<double>, bool> cache_;
+};
+
+std::string mark_args(const Row& r) {
+  std::string head = "--head " + r.head_name;
+  if (r.head.model.second_order != find_head(r.head_name)->second_order)
+    head += " --head-model " + r.head.head_model();
+  if (r.head.laser_rise_s > 0) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, " --laser-rise-us %g", r.head.laser_rise_s * 1e6);
+    head += buf;
+  }
+  return head + " " + cli::pen_args_string(r.pen);
+}
+
+std::string params_text(const Row& r) {
+  std::string s;
+  char buf[64];
+  for (std::size_t i = 1; i < r.x.size(); ++i) {
+    std::snprintf(buf, sizeof buf, "%s%s %.3g", s.empty() ? "" : ", ", r.strategy->params[i].name, r.x[i]);
+    s += buf;
+  }
+  return s;
+}
+
+std::string model_text(const Row& r) {
+  char buf[64];
+  if (!r.model_note.empty()) return r.model_note;
+  if (r.errors.size() > 1) return "lag 0, ±10 %";
+  if (r.errors[0] == 0) return "identified";
+  std::snprintf(buf, sizeof buf, "lag %+.0f %%", r.errors[0] * 100);
+  return buf;
 }
 
 }  // namespace
@@ -147,75 +368,137 @@ int main(int argc, char** argv) {
   CLI::App app{"characters per second on the simulated heads (SCANLAB's cps method)"};
   bool quick = false, json = false;
   std::string head_name, strategy_name, text = kCharacters, font = kBuiltinFontName;
-  double speed = 0, join_speed = 0;
+  double speed = 0;
   unsigned workers = 2;
-  PenRules rules;
-  app.add_flag("--short", quick, "coarser speed search (for CI)");
-  app.add_flag("--json", json, "print rows {head, strategy, quality, speed_mm_s, cps} as JSON");
-  app.add_option("--head", head_name, "only this head (SL10, SL14, cheap)");
-  app.add_option("--strategy", strategy_name, "only this corner strategy (blanking, delays, none)");
+  app.add_flag("--short", quick, "coarser parameter search (for CI)");
+  app.add_flag("--json", json, "print the rows as JSON (docs/speed.md lists the fields)");
+  app.add_option("--head", head_name, "only this head (SL10, SL14, cheap, SA14)");
+  app.add_option("--strategy", strategy_name,
+                 "only this strategy (blanking, delays, none, none+la, none+ff, blanking+ff)");
   app.add_option("--workers", workers, "searches run in parallel (each a producer and a drain thread)");
-  app.add_option("--speed", speed, "evaluate this marking speed only (mm/s)");
+  app.add_option("--speed", speed, "evaluate this marking speed with default parameters only (mm/s)");
   app.add_option("--text", text, "mark this text instead (diagnosis)");
   app.add_option("--font", font, "in this font instead (diagnosis)");
-  app.add_option("--join-speed", join_speed, "blanking join speed, mm/s (-1: marking speed)");
-  app.add_option("--run-in", rules.run_in, "fixed blanking run-in length, multiple of v·τ");
-  app.add_option("--min-run-in", rules.min_run_in, "shortest automatic run-in, multiple of v·τ");
-  app.add_option("--run-out", rules.run_out, "blanking run-out length, multiple of v·τ");
-  app.add_option("--settle", rules.settle_um, "transient left at laser on, µm");
-  app.add_option("--blank-angle", rules.blank_angle_deg, "blanking threshold, degrees");
   CLI11_PARSE(app, argc, argv);
 
   try {
-    std::vector<HeadModel> heads;
-    if (head_name.empty()) {
-      for (const std::string& n : head_names()) heads.push_back(*find_head(n));
-    } else if (const auto h = find_head(head_name)) {
-      heads.push_back(*h);
-    } else {
-      throw InputError("unknown head '" + head_name + "'");
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::vector<Strategy> strategies = all_strategies();
+    std::vector<const Strategy*> chosen;
+    for (const Strategy& s : strategies)
+      if (strategy_name.empty() || s.name == strategy_name) chosen.push_back(&s);
+    if (chosen.empty()) throw InputError("unknown strategy '" + strategy_name + "'");
+    std::vector<std::string> heads = head_names();
+    if (!head_name.empty()) {
+      const auto h = find_head(head_name);
+      if (!h) throw InputError("unknown head '" + head_name + "'");
+      heads = {h->name};
     }
-    std::vector<CornerStrategy> strategies = {CornerStrategy::blanking, CornerStrategy::delays,
-                                              CornerStrategy::none};
-    if (!strategy_name.empty()) strategies = {parse_corner_strategy(strategy_name)};
     const Workload work(text, font);
 
-    if (speed > 0) {
-      for (const HeadModel& h : heads)
-        for (CornerStrategy s : strategies) {
-          const Trial t = mark_at(work, {h, s, rules, join_speed}, speed);
-          std::printf("%-6s %-9s %7.0f mm/s  max %6.1f µm  rms %5.1f µm  cov %.4f  dose %.3f  "
-                      "over %5.1f µm  %.4f s  %6.0f cps\n",
-                      h.name.c_str(), std::string(to_string(s)).c_str(), speed,
-                      t.quality.max_deviation_um, t.quality.rms_deviation_um, t.quality.coverage,
-                      t.quality.dose_ratio_max, t.quality.overshoot_um, t.mark_time_s,
-                      work.characters / t.mark_time_s);
+    // Identify every simulated head the rows mark on: the planner gets the fitted profile.
+    std::map<std::string, HeadProfile> identified;
+    auto profile_of = [&](const HeadModel& h) {
+      const std::string key = h.name + (h.second_order ? "/2" : "/1");
+      if (!identified.count(key)) {
+        SimScannerOptions o;
+        o.head = h;
+        identified[key] = identify_head(o);
+      }
+      return identified[key];
+    };
+
+    // The rows: every head × strategy; model-error, second-order and laser-rise rows on SL10.
+    std::vector<Row> rows;
+    auto add = [&](const std::string& name, RealHead real, HeadProfile model,
+                   std::vector<double> errors, std::string note, const Strategy* s) {
+      for (const QualityLimits* level : {&kHighQuality, &kGoodQuality}) {
+        Row r;
+        r.head_name = name;
+        r.head = real;
+        r.model = model;
+        r.errors = errors;
+        r.model_note = note;
+        r.strategy = s;
+        r.level = level;
+        if (level == &kGoodQuality) r.seed_row = rows.size() - 1;
+        rows.push_back(std::move(r));
+      }
+    };
+    for (const std::string& name : heads) {
+      const RealHead real{*find_head(name)};
+      for (const Strategy* s : chosen) add(name, real, profile_of(real.model), {0.0}, "", s);
+    }
+    const bool sl10 = head_name.empty() || head_name == "SL10";
+    if (sl10) {
+      const RealHead sl{head_sl10()};
+      RealHead second{head_sl10()};
+      second.model.second_order = true;
+      RealHead rise{head_sl10(), kLaserRise_s};
+      for (const Strategy* s : chosen) {
+        if (s->feed_forward && s->corner == CornerStrategy::none) {
+          for (double e : {-0.1, 0.1}) add("SL10", sl, profile_of(sl.model), {e}, "", s);
+          add("SL10", sl, profile_of(sl.model), {0.0, -0.1, 0.1}, "", s);
+          HeadProfile first = profile_of(second.model);
+          first.model = ServoOrder::first;
+          add("SL10", second, first, {0.0}, "first-order model", s);
         }
+        add("SL10", second, profile_of(second.model), {0.0}, "", s);
+        add("SL10", rise, profile_of(rise.model), {0.0}, "", s);
+      }
+    }
+
+    if (speed > 0) {  // one speed, default parameters: a diagnosis aid
+      for (Row& r : rows) {
+        if (r.level != &kHighQuality) continue;
+        std::vector<double> x;
+        for (const Param& p : r.strategy->params) x.push_back(p.initial);
+        x[0] = speed;
+        const Trial t =
+            mark_with(work, r.head, pen_at(*r.strategy, x, r.model.with_lag_error(r.errors[0])));
+        std::printf("%-6s %-6s %-11s %-17s %4.0f µs %6.0f mm/s  max %6.1f µm  rms %5.1f µm  cov %.4f  "
+                    "dose %.3f  over %5.1f µm  %.4f s  %6.0f cps\n",
+                    r.head_name.c_str(), r.head.head_model().c_str(), r.strategy->name.c_str(),
+                    model_text(r).c_str(), r.head.laser_rise_s * 1e6, speed,
+                    t.quality.max_deviation_um, t.quality.rms_deviation_um, t.quality.coverage,
+                    t.quality.dose_ratio_max, t.quality.overshoot_um, t.mark_time_s, t.cps);
+      }
       return 0;
     }
 
-    // Every (head, strategy, level) is an independent search; run them on `workers` threads
-    // and print in table order.
-    std::vector<Row> rows;
-    std::vector<Setup> setups;
-    std::vector<const Level*> levels;
-    for (const HeadModel& h : heads)
-      for (CornerStrategy s : strategies)
-        for (const Level* level : {&kHigh, &kGood}) {
-          rows.push_back({h.name, std::string(to_string(s)), level->name, std::nullopt, 0});
-          setups.push_back({h, s, rules, join_speed});
-          levels.push_back(level);
-        }
+    // Every high row is an independent search; each good row starts from its high row's
+    // result (which meets "good" too), so a good row is never below its high row.
     std::atomic<std::size_t> next{0};
     std::exception_ptr error;
-    std::mutex error_mutex;
+    std::mutex mutex;
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      if (rows[i].seed_row == SIZE_MAX) order.push_back(i);
     auto worker = [&] {
-      for (std::size_t i; (i = next++) < rows.size();) {
+      for (std::size_t k; (k = next++) < order.size();) {
         try {
-          rows[i].trial = fastest(work, setups[i], *levels[i], quick ? 5 : 9);
-          if (rows[i].trial) rows[i].cps = work.characters / rows[i].trial->mark_time_s;
+          Row& high = rows[order[k]];
+          auto started = std::chrono::steady_clock::now();
+          auto lap = [&started] {
+            const auto now = std::chrono::steady_clock::now();
+            const double s = std::chrono::duration<double>(now - started).count();
+            started = now;
+            return s;
+          };
+          Search(work, high, quick).run(std::nullopt);
+          high.search_s = lap();
+          for (Row& good : rows)
+            if (good.seed_row == order[k]) {
+              if (high.trial) {
+                good.trial = high.trial;
+                good.x = high.x;
+                good.pen = high.pen;
+              }
+              Search(work, good, quick).run(high.trial ? std::optional(high.x) : std::nullopt);
+              good.search_s = lap();
+            }
         } catch (...) {
-          std::lock_guard<std::mutex> lock(error_mutex);
+          std::lock_guard<std::mutex> lock(mutex);
           error = std::current_exception();
         }
       }
@@ -224,20 +507,67 @@ int main(int argc, char** argv) {
     for (unsigned i = 0; i < std::max(1u, workers); ++i) pool.emplace_back(worker);
     for (std::thread& t : pool) t.join();
     if (error) std::rethrow_exception(error);
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
+    const double bound = work.ink_bound_cps();
     if (json) {
       nlohmann::json out = nlohmann::json::array();
-      for (const Row& r : rows)
-        out.push_back({{"head", r.head}, {"strategy", r.strategy}, {"quality", r.level},
-                       {"speed_mm_s", r.trial ? r.trial->speed_mm_s : 0.0}, {"cps", r.cps}});
+      for (const Row& r : rows) {
+        nlohmann::json j = {{"head", r.head_name},
+                            {"head_model", r.head.head_model()},
+                            {"laser_rise_us", r.head.laser_rise_s * 1e6},
+                            {"strategy", r.strategy->name},
+                            {"quality", to_string(r.level->level)},
+                            {"model_error", r.errors.size() > 1 ? 0.1 : r.errors[0]},
+                            {"model_error_both_signs", r.errors.size() > 1},
+                            {"planner_model", r.model_note.empty() ? std::string(to_string(r.model.model)) + "-order"
+                                                                   : r.model_note},
+                            {"cps", r.trial ? r.trial->cps : 0.0},
+                            {"ink_bound_ratio", r.trial ? r.trial->cps / bound : 0.0},
+                            {"speed_mm_s", r.trial ? r.x[0] : 0.0},
+                            {"trials", r.trials},
+                            {"search_s", r.search_s}};
+        if (r.trial) {
+          nlohmann::json params = nlohmann::json::object();
+          for (std::size_t i = 1; i < r.x.size(); ++i) params[r.strategy->params[i].name] = r.x[i];
+          j["params"] = params;
+          j["mark_time_s"] = r.trial->mark_time_s;
+          j["max_deviation_um"] = r.trial->quality.max_deviation_um;
+          j["rms_deviation_um"] = r.trial->quality.rms_deviation_um;
+          j["coverage"] = r.trial->quality.coverage;
+          j["dose_ratio_max"] = r.trial->quality.dose_ratio_max;
+          j["overshoot_um"] = r.trial->quality.overshoot_um;
+          j["mark_args"] = mark_args(r);
+        } else {
+          j["mark_args"] = nullptr;
+        }
+        out.push_back(j);
+      }
       std::cout << out.dump() << "\n";
       return 0;
     }
-    std::printf("cps: 62 characters A–Z a–z 0–9, built-in font, 1 mm cap height, device time%s\n",
-                quick ? " (short search: speeds within 16 %)" : " (speeds within 1 %)");
-    std::printf("%-6s %-9s %-5s %10s %8s   %s\n", "head", "strategy", "level", "speed mm/s",
-                "cps", "max µm / rms µm / coverage / dose ratio at that speed");
-    for (const Row& r : rows) print_row(r);
+    std::printf("cps: 62 characters A–Z a–z 0–9, built-in font, 1 mm cap height, device time; "
+                "%s search; %.0f s\n", quick ? "short" : "full", elapsed);
+    std::printf("ink-only bound: %.1f mm of ink at %.1f m/s = %.0f cps\n", work.ink_mm,
+                kInkSpeed_mm_s / 1000, bound);
+    std::printf("%-5s %-6s %-4s %-11s %-17s %-5s %6s %6s %7s  %s\n", "head", "servo", "rise",
+                "strategy", "planner model", "class", "cps", "/ink", "mm/s",
+                "max µm / rms µm / coverage / dose ratio; parameters");
+    for (const Row& r : rows) {
+      std::printf("%-5s %-6s %-4.0f %-11s %-17s %-5s ", r.head_name.c_str(),
+                  r.head.head_model().c_str(), r.head.laser_rise_s * 1e6, r.strategy->name.c_str(),
+                  model_text(r).c_str(), std::string(to_string(r.level->level)).c_str());
+      if (!r.trial) {
+        std::printf("%6s %6s %7s  not reached\n", "-", "-", "-");
+        continue;
+      }
+      const Quality& q = r.trial->quality;
+      std::printf("%6.0f %6.3f %7.0f  %.1f / %.1f / %.4f / %.2f; %s\n", r.trial->cps,
+                  r.trial->cps / bound, r.x[0], q.max_deviation_um, q.rms_deviation_um, q.coverage,
+                  q.dose_ratio_max, params_text(r).c_str());
+    }
+    std::printf("marker mark options of each row: cps --json (mark_args)\n");
   } catch (const std::exception& e) {
     std::cerr << "cps: " << e.what() << "\n";
     return 1;

@@ -1,6 +1,7 @@
 #pragma once
-// Scan-head presets for the simulated scanner: tracking error τ (first-order lag), positioning
-// speed and acceleration limits, field size. Sources and fitted numbers are in head_model.cpp.
+// Scan-head presets for the simulated scanner: tracking error τ (first-order lag, or the ramp lag
+// of a second-order servo), positioning speed and acceleration limits, field size. Where every
+// number comes from is in head_model.cpp.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -30,8 +31,9 @@ struct HeadModel {
 HeadModel head_sl10();   // SCANLAB 10 mm class, τ = 0.12 ms
 HeadModel head_sl14();   // SCANLAB 14 mm class, τ = 0.21 ms
 HeadModel head_cheap();  // BJJCZ-driven budget head, τ = 0.25 ms
+HeadModel head_sa14();   // excelliSCAN 14 class (SCANahead limits), second-order servo, τ = 0.21 ms
 
-// Preset by name ("SL10", "SL14", "cheap"; case-insensitive), or nothing.
+// Preset by name ("SL10", "SL14", "cheap", "SA14"; case-insensitive), or nothing.
 std::optional<HeadModel> find_head(std::string_view name);
 // Names find_head() knows, for help texts and errors.
 std::vector<std::string> head_names();

@@ -1,5 +1,6 @@
 #pragma once
-// Where the beam really went while the laser was on (effective power ≥ half): one polyline per
+// Where the beam really went while the laser was on (effective power at least half of the power
+// it was last commanded to while on, so a low-power pen or a power scaled with speed counts): one polyline per
 // continuous lit run, with its first and last point; in between, points about the recording
 // spacing apart but never more than one integration sub-step apart, so the segments between
 // them are the beam path.

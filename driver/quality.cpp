@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "driver/segment_grid.hpp"
@@ -76,10 +78,28 @@ struct QualityReference::Data {
     for (StrokeSample& s : samples) s.ideal_dose = ideal.sum_disc(s.p, options.dose_window_mm);
   }
 
-  SegmentGrid::Nearest nearest(Vec2 p) const {
-    SegmentGrid::Nearest n = fine.nearest(p, fine_rings);
-    if (std::isinf(n.distance)) n = coarse.nearest(p, 1 << 20);
+  // Nearest intended segment to p, of any stroke, or only of stroke `only` when given.
+  SegmentGrid::Nearest nearest(Vec2 p, std::optional<std::uint32_t> only = std::nullopt) const {
+    std::uint32_t first = 0, last = std::numeric_limits<std::uint32_t>::max();
+    if (only) first = strokes[*only].first_segment, last = strokes[*only].last_segment;
+    SegmentGrid::Nearest n = fine.nearest(p, fine_rings, first, last);
+    if (std::isinf(n.distance)) n = coarse.nearest(p, 1 << 20, first, last);
     return n;
+  }
+
+  // The stroke a lit run marks: the one nearest to most of its points (ties: the lower index).
+  std::uint32_t stroke_marked_by(const std::vector<SegmentGrid::Nearest>& nearest_any,
+                                 std::vector<std::uint32_t>& ids) const {
+    ids.clear();
+    for (const SegmentGrid::Nearest& n : nearest_any) ids.push_back(stroke_of_segment[n.segment]);
+    std::sort(ids.begin(), ids.end());
+    std::uint32_t best = ids.front();
+    std::size_t best_count = 0;
+    for (std::size_t i = 0, j = 0; i < ids.size(); i = j) {
+      while (j < ids.size() && ids[j] == ids[i]) ++j;
+      if (j - i > best_count) best = ids[i], best_count = j - i;
+    }
+    return best;
   }
 
   // How far a lit point lies beyond the end of an open stroke, along the stroke's end direction.
@@ -118,16 +138,27 @@ Quality QualityReference::evaluate(const LitPaths& lit, const DoseRaster& dose) 
   Quality q;
   if (d.samples.empty()) return q;
 
-  // Deviation and overshoot of every lit position.
+  // Deviation and overshoot of every lit position, measured against the stroke its lit run
+  // marks: a beam that cuts across to a neighbouring stroke is off its own stroke, however close
+  // it passes to another.
   double sum_sq = 0, worst = 0, overshoot = 0;
-  for (const auto& run : lit.runs)
-    for (const Vec2& p : run) {
-      const SegmentGrid::Nearest n = d.nearest(p);
+  std::vector<SegmentGrid::Nearest> nearest_any;
+  std::vector<std::uint32_t> ids;
+  for (const auto& run : lit.runs) {
+    if (run.empty()) continue;
+    nearest_any.clear();
+    for (const Vec2& p : run) nearest_any.push_back(d.nearest(p));
+    const std::uint32_t stroke = d.stroke_marked_by(nearest_any, ids);
+    for (std::size_t i = 0; i < run.size(); ++i) {
+      const SegmentGrid::Nearest n = d.stroke_of_segment[nearest_any[i].segment] == stroke
+                                         ? nearest_any[i]
+                                         : d.nearest(run[i], stroke);
       worst = std::max(worst, n.distance);
       sum_sq += n.distance * n.distance;
       overshoot = std::max(overshoot, d.overshoot_mm(n));
       ++q.lit_points;
     }
+  }
   if (q.lit_points == 0) return q;
   q.max_deviation_um = worst * 1e3;
   q.rms_deviation_um = std::sqrt(sum_sq / static_cast<double>(q.lit_points)) * 1e3;

@@ -21,7 +21,9 @@ struct QualityOptions {
 };
 
 struct Quality {
-  double max_deviation_um = 0;   // largest distance of a lit beam position from the intended strokes
+  // Largest distance of a lit beam position from the intended stroke it is marking (each lit run
+  // is measured against one stroke: the one nearest to most of its points).
+  double max_deviation_um = 0;
   double rms_deviation_um = 0;   // RMS of that distance over the lit positions
   double coverage = 0;           // share of intended stroke length within coverage_radius of a lit path
   // Burn-in: the dose along the intended strokes divided by the dose an ideal constant-speed mark

@@ -64,13 +64,14 @@ std::int64_t SegmentGrid::cell_y(double y) const {
   return static_cast<std::int64_t>(std::floor((y - origin_.y) / cell_mm_));
 }
 
-void SegmentGrid::scan_cell(std::int64_t x, std::int64_t y, Vec2 p, Nearest& best,
+void SegmentGrid::scan_cell(std::int64_t x, std::int64_t y, const Query& q, Nearest& best,
                             double& best_d2) const {
   const auto c = static_cast<std::size_t>(y * nx_ + x);
   for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
     const std::uint32_t i = items_[k];
+    if (i < q.first || i > q.last) continue;
     double t = 0;
-    const double d2 = squared_distance(p, segments_[i].a, segments_[i].b, t);
+    const double d2 = squared_distance(q.p, segments_[i].a, segments_[i].b, t);
     if (d2 < best_d2) {
       best_d2 = d2;
       best = {0, i, t};
@@ -78,7 +79,9 @@ void SegmentGrid::scan_cell(std::int64_t x, std::int64_t y, Vec2 p, Nearest& bes
   }
 }
 
-SegmentGrid::Nearest SegmentGrid::nearest(Vec2 p, int max_rings) const {
+SegmentGrid::Nearest SegmentGrid::nearest(Vec2 p, int max_rings, std::uint32_t first,
+                                          std::uint32_t last) const {
+  const Query q{p, first, last};
   Nearest best;
   if (segments_.empty()) return best;
   double best_d2 = std::numeric_limits<double>::infinity();
@@ -94,10 +97,10 @@ SegmentGrid::Nearest SegmentGrid::nearest(Vec2 p, int max_rings) const {
     if (y0 > y1 || x0 > x1) continue;
     for (std::int64_t y = y0; y <= y1; ++y) {
       if (y == cy - r || y == cy + r) {
-        for (std::int64_t x = x0; x <= x1; ++x) scan_cell(x, y, p, best, best_d2);
+        for (std::int64_t x = x0; x <= x1; ++x) scan_cell(x, y, q, best, best_d2);
       } else {
-        if (cx - r >= 0 && cx - r < nx_) scan_cell(cx - r, y, p, best, best_d2);
-        if (r > 0 && cx + r >= 0 && cx + r < nx_) scan_cell(cx + r, y, p, best, best_d2);
+        if (cx - r >= 0 && cx - r < nx_) scan_cell(cx - r, y, q, best, best_d2);
+        if (r > 0 && cx + r >= 0 && cx + r < nx_) scan_cell(cx + r, y, q, best, best_d2);
       }
     }
   }

@@ -32,14 +32,22 @@ class SegmentGrid {
 
   // Nearest segment, searching at most max_rings rings of cells around p; distance is infinite
   // if nothing was found that close (the caller then asks a coarser grid) or the grid is empty.
-  Nearest nearest(Vec2 p, int max_rings) const;
+  // Only segments with indices in [first, last] count (all by default): the quality figures
+  // measure a lit run against the one stroke it marks, whose segments are such a range.
+  Nearest nearest(Vec2 p, int max_rings, std::uint32_t first = 0,
+                  std::uint32_t last = std::numeric_limits<std::uint32_t>::max()) const;
   // True if some segment passes within radius of p.
   bool any_within(Vec2 p, double radius) const;
 
  private:
   std::int64_t cell_x(double x) const;
   std::int64_t cell_y(double y) const;
-  void scan_cell(std::int64_t x, std::int64_t y, Vec2 p, Nearest& best, double& best_d2) const;
+  struct Query {
+    Vec2 p;
+    std::uint32_t first, last;
+  };
+  void scan_cell(std::int64_t x, std::int64_t y, const Query& q, Nearest& best,
+                 double& best_d2) const;
 
   std::vector<Segment> segments_;
   double cell_mm_;

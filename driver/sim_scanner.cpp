@@ -244,6 +244,7 @@ void SimScanner::halt() noexcept {
   halted_.store(true, std::memory_order_release);
   laser_cmd_ = false;
   power_ = 0;
+  lit_ref_ = 0;
   was_lit_ = false;
   laser_on_.store(false, std::memory_order_release);
 }
@@ -282,6 +283,10 @@ void SimScanner::follow(const ScanSample& s) {
   const double mean_share = tr > 0 ? tr / dt * rise : 0.0;
   const double t0 = static_cast<double>(samples_) * options_.tick_s;
   laser_cmd_ = s.laser;
+  // "Lit" is relative to the power the laser was last commanded to while on: a pen at low power,
+  // or power scaled with speed along a stroke, still marks; after laser-off the falling power
+  // counts as lit until it is below half of the last on-power.
+  if (target_power > 0) lit_ref_ = target_power;
 
   for (int j = 0; j < n; ++j) {
     // Command at the start of this sub-step (first-order hold from the previous sample).
@@ -298,7 +303,7 @@ void SimScanner::follow(const ScanSample& s) {
       trail_.add(p0, p1, dose_scale_ * mean_power * dt);
     else
       trail_.flush();
-    record_lit(p0, p1, power_ >= 0.5);
+    record_lit(p0, p1, lit_ref_ > 0 && power_ >= 0.5 * lit_ref_);
     if (options_.probe) options_.probe(t0 + (j + 1) * dt, p1, power_);
   }
   cmd_ = to;

@@ -114,6 +114,7 @@ class SimScanner : public SampleDevice<ScanSample> {
   Vec2 cmd_{0, 0};           // previous command (start of the current tick)
   bool laser_cmd_ = false;
   double power_ = 0;         // effective laser power 0..1
+  double lit_ref_ = 0;       // power of the last lit sample: the lit test is relative to it
   bool was_lit_ = false;
   std::uint64_t samples_ = 0;
   DoseRaster dose_;

@@ -12,10 +12,13 @@
 #include "marker/cli/code_options.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/hatch_options.hpp"
+#include "marker/cli/head_options.hpp"
+#include "marker/cli/option_ranges.hpp"
 #include "marker/cli/pen_options.hpp"
 #include "marker/codes/code_data.hpp"
 #include "marker/codes/code_json.hpp"
 #include "marker/job/job.hpp"
+#include "marker/limits/layout_limits.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/preview/mark_preview.hpp"
 
@@ -27,6 +30,8 @@ struct Args {
   std::string data;
   CodeArgs code;
   HatchArgs hatch;
+  HeadArgs head;
+  double field_mm = 110;
   PenArgs pen;
   VerifyArgs verify;
   std::string preview;
@@ -40,9 +45,9 @@ JobSpec make_spec(const Args& a) {
   // Marks end a beam radius inside their modules unless the hatch inset says otherwise.
   const FillOptions hatch = to_fill_options(a.hatch, a.verify.beam_diameter_mm / 2);
   spec.codes.push_back(to_code_object(a.symbology, a.data, a.code, hatch, ""));
-  const HeadAndPen hp = make_head_and_pen(a.pen);
-  spec.head = hp.head;
-  spec.pen = hp.pen;
+  spec.head = simulated_head(a.head);
+  spec.head.field_mm = a.field_mm;
+  spec.pen = make_pen(a.pen, spec.head);
   return spec;
 }
 
@@ -122,6 +127,8 @@ Command make_code_command() {
         sub->add_option("data", a->data, "data to encode (GS1: (01)09506000134352(17)261231(10)LOT42(21)SN1)")->required();
         add_code_options(*sub, a->code, "");
         add_hatch_options(*sub, a->hatch);
+        add_head_options(*sub, a->head, false);
+        add_ranged_option(*sub, "--field", a->field_mm, "field size (square), mm", kFieldRange)->capture_default_str();
         add_pen_options(*sub, a->pen);
         add_verify_options(*sub, a->verify);
         sub->add_option("--preview", a->preview, "write the planned path over the dose (.png or .svg)");

@@ -36,6 +36,7 @@ Command make_serial_command();
 Command make_log_command();
 Command make_devices_command();
 Command make_frame_command();
+Command make_head_command();
 
 std::vector<Command> all_commands();
 

@@ -12,6 +12,7 @@ std::unique_ptr<Device> open_device(const std::string& spec, const JobSpec& job,
     SimScannerOptions o = simulator_options(job);
     o.fault_at = sim.fault_at;
     o.trace = sim.trace;
+    o.laser_rise_s = sim.laser_rise_s;
     return std::make_unique<SimScanner>(std::move(o));
   }
   if (const auto board = lmc::parse_lmc_spec(spec))

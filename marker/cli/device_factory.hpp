@@ -16,6 +16,7 @@ namespace mark::cli {
 struct SimSettings {
   std::uint64_t fault_at = UINT64_MAX;  // --inject fault@N
   bool trace = false;                   // --trace FILE.csv
+  double laser_rise_s = 0;              // --laser-rise-us
 };
 
 // The device named by `spec` for this job. Throws InputError naming the option and the kinds

@@ -242,7 +242,7 @@ Command make_job_command() {
         n->add_option("--text", a.text, "template: text with {serial}, {date:%y%j}, {var:lot}, {shift}")->required();
         n->add_option("--name", a.object, "the object's name")->capture_default_str();
         add_layout_options(*n, a.layout);
-        n->add_option("--head", a.head, "scan head: SL10, SL14, cheap")->capture_default_str();
+        n->add_option("--head", a.head, "scan head: SL10, SL14, cheap, SA14")->capture_default_str();
         add_ranged_option(*n, "--spot", a.spot_um, "focused spot diameter, µm", kSpotRange)->capture_default_str();
         n->add_option("--pen", a.pen, "the pen's name")->capture_default_str();
         n->add_option("--corner", a.corner, "corner strategy: blanking, delays, none")->capture_default_str();

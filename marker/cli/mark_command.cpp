@@ -1,8 +1,10 @@
 // `marker mark TEXT [layout options] [--fill hatch …] [--code SYMBOLOGY:DATA --code-…]
-//  [--device sim|lmc[:SERIAL]|lmc-capture:FILE] [--head SL10|SL14|cheap]
-//  [--corner blanking|delays|none] [--speed MM_S] [--power PCT] [--frequency KHZ]
-//  [--pulse-width NS] [--preview FILE.png] [--dose-png FILE.png] [--virtual-time] [--json]
-//  [--inject KIND@N] [--trace FILE.csv] [--require-quality high|good] [LMC options]`
+//  [--device sim|lmc[:SERIAL]|lmc-capture:FILE] [--head SL10|SL14|cheap|SA14]
+//  [--head-model first|second] [--laser-rise-us US] [--corner blanking|delays|none]
+//  [--speed MM_S|auto] [--lookahead] [--feed-forward] [--head-profile FILE] [pen parameters]
+//  [--power PCT] [--frequency KHZ] [--pulse-width NS] [--preview FILE.png] [--dose-png FILE.png]
+//  [--virtual-time] [--json] [--inject KIND@N] [--trace FILE.csv] [--require-quality high|good]
+//  [LMC options]`
 // `marker mark --job FILE [--set NAME=VALUE …] [--count N] [--store PATH|URL] [--station NAME]
 //  [--remark ID]`: the production run, in mark_job.cpp.
 // The main job: real time by default (the drain paced at the tick, so the line memory is written
@@ -27,6 +29,7 @@
 #include "marker/cli/code_options.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/device_factory.hpp"
+#include "marker/cli/head_options.hpp"
 #include "marker/cli/inject_option.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
@@ -36,6 +39,7 @@
 #include "marker/cli/option_values.hpp"
 #include "marker/codes/code_data.hpp"
 #include "marker/codes/code_json.hpp"
+#include "marker/cli/pen_options.hpp"
 #include "marker/job/auto_speed.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
@@ -52,14 +56,10 @@ struct MarkArgs {
   std::string text;
   LayoutArgs layout;
   std::string device = "sim";
-  std::string head = "SL10";
-  std::string corner = "blanking";
+  HeadArgs head;
+  PenArgs pen;
   std::string order = "glyph";
   std::string speed = "auto";  // mm/s, or auto: from the figure's tightest curve and the head
-  double jump_speed_mm_s = 0;  // 0: the head's default
-  double tick_us = 10;
-  std::optional<double> run_in_mm;
-  std::optional<double> run_out_mm;
   std::string preview;
   std::string dose_png;
   std::string trace;
@@ -77,9 +77,7 @@ struct MarkArgs {
 
 JobSpec make_spec(const MarkArgs& a) {
   JobSpec spec;
-  const auto head = find_head(a.head);
-  if (!head) throw InputError("--head '" + a.head + "' is not one of SL10, SL14, cheap");
-  spec.head = *head;
+  spec.head = simulated_head(a.head);
   spec.head.field_mm = a.layout.field_mm;
   spec.text = unescape_text(a.text);
   if (!spec.text.empty()) {
@@ -117,16 +115,9 @@ JobSpec make_spec(const MarkArgs& a) {
     check_range("--speed", *v, speeds, a.speed);
     speed_mm_s = *v;
   }
-  spec.pen = pen_for_head(spec.head, parse_corner_strategy(a.corner), speed_mm_s,
-                          a.tick_us * 1e-6);
-  if (a.jump_speed_mm_s != 0) {
-    check_range("--jump-speed", a.jump_speed_mm_s,
-                Range{1, spec.head.max_speed_mm_s, "mm/s (head " + spec.head.name + "'s positioning limit)"});
-    spec.pen.jump_speed_mm_s = a.jump_speed_mm_s;
-    if (spec.pen.corner == CornerStrategy::blanking) spec.pen.join_speed_mm_s = a.jump_speed_mm_s;
-  }
-  if (a.run_in_mm) spec.pen.run_in_mm = *a.run_in_mm;
-  if (a.run_out_mm) spec.pen.run_out_mm = *a.run_out_mm;
+  PenArgs pen = a.pen;
+  pen.speed_mm_s = speed_mm_s;
+  spec.pen = make_pen(pen, spec.head);
   spec.laser = a.laser;
   return spec;
 }
@@ -138,6 +129,10 @@ nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobOptions&
   j["font"] = a.layout.font;
   j["height_mm"] = spec.layout.height_mm;
   j["head"] = spec.head.name;
+  j["head_model"] = spec.head.second_order ? "second" : "first";
+  j["laser_rise_us"] = a.head.laser_rise_us;
+  j["lookahead"] = spec.pen.lookahead || spec.pen.feed_forward();
+  j["feed_forward"] = spec.pen.feed_forward();
   j["device"] = device_name;
   j["corner"] = to_string(spec.pen.corner);
   j["speed_mm_s"] = spec.pen.mark_speed_mm_s;
@@ -230,13 +225,15 @@ void write_trace(const std::vector<SimTraceRow>& rows, const std::string& path) 
 
 // --require-quality: the simulator predicts the mark (virtual time, no device touched); below
 // the class the job is refused before anything fires.
-void require_quality(const JobSpec& spec, const std::string& name) {
+void require_quality(const JobSpec& spec, const std::string& name, double laser_rise_s) {
   const auto wanted = parse_quality_class(name);
   if (!wanted || *wanted == QualityClass::poor)
     throw InputError("--require-quality '" + name + "' is not one of high, good");
   JobOptions predict;
   predict.virtual_time = true;
-  SimScanner sim(simulator_options(spec));
+  SimScannerOptions o = simulator_options(spec);
+  o.laser_rise_s = laser_rise_s;
+  SimScanner sim(o);
   const JobResult r = run_job_simulated(spec, predict, sim);
   for (std::size_t k = 0; k < r.codes.size(); ++k)
     if (!r.codes[k].data_match)
@@ -263,11 +260,13 @@ int run_mark(const MarkArgs& a) {
   if (!a.dose_png.empty()) check_output_path("--dose-png", a.dose_png, {".png"});
   if (!a.trace.empty()) check_output_path("--trace", a.trace);
   const InjectArg inject = a.inject.empty() ? InjectArg{} : parse_inject(a.inject);
-  if (!a.require_quality.empty()) require_quality(spec, a.require_quality);
+  if (!a.require_quality.empty())
+    require_quality(spec, a.require_quality, a.head.laser_rise_us * 1e-6);
 
   SimSettings sim_settings;
   sim_settings.fault_at = inject.device_fault_at;
   sim_settings.trace = !a.trace.empty();
+  sim_settings.laser_rise_s = a.head.laser_rise_us * 1e-6;
   const std::unique_ptr<Device> device = open_device(a.device, spec, sim_settings, a.lmc);
   auto* scanner = dynamic_cast<SimScanner*>(device.get());
   if (!scanner && (!a.preview.empty() || !a.dose_png.empty() || !a.trace.empty()))
@@ -378,23 +377,13 @@ Command make_mark_command() {
                             "'marker devices'), lmc-capture:FILE (the board's bytes to a file); with --job "
                             "the job's unless given")
                 ->capture_default_str());
-        sub->add_option("--head", a->head, "scan head preset: SL10, SL14, cheap")->capture_default_str();
-        sub->add_option("--corner", a->corner, "corner strategy: blanking, delays, none")->capture_default_str();
+        add_head_options(*sub, a->head, true);
         sub->add_option("--order", a->order, "stroke order: glyph, shortest (least jumping)")->capture_default_str();
         sub->add_option("--speed", a->speed,
                         "marking speed, mm/s, or auto: the fastest (up to 1000 mm/s) at which the "
                         "head's lag shrinks the tightest curve by at most 8 µm")
             ->capture_default_str();
-        add_ranged_option(*sub, "--jump-speed", a->jump_speed_mm_s,
-                          "jump speed, mm/s (0: half the head's positioning limit; at most the limit)",
-                          Range{1, 100000, "mm/s", false, true});
-        add_ranged_option(*sub, "--tick", a->tick_us, "locus tick, µs (at most 20 % of the head's τ)",
-                          kTickRange)
-            ->capture_default_str();
-        add_ranged_option(*sub, "--run-in", a->run_in_mm,
-                          "blanking run-in length, mm (default: sized by the head's settling)", kExtensionRange);
-        add_ranged_option(*sub, "--run-out", a->run_out_mm, "blanking run-out length, mm (default v·τ)",
-                          kExtensionRange);
+        add_pen_options(*sub, a->pen, false);
         sub->add_option("--preview", a->preview,
                         "write the marked result: dose under the planned path (.png or .svg)");
         sub->add_option("--dose-png", a->dose_png,

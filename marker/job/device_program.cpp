@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <variant>
 
+#include "fonts/error.hpp"
 #include "fonts/overloaded.hpp"
 
 namespace mark {
@@ -125,6 +126,11 @@ class Builder {
 }  // namespace
 
 Plan plan_for_device(const Figure& figure, const Pen& pen, StrokeOrder order) {
+  // Look-ahead and feed-forward shape the 10 µs samples themselves; a board with its own clock
+  // ramps its own speeds and drives its servo itself.
+  if (pen.lookahead || pen.feed_forward())
+    throw InputError("look-ahead and feed-forward need a sample-level device: a command-level "
+                     "board runs its own clock and speed ramps");
   Pen p = pen;
   if (p.corner == CornerStrategy::delays) p.corner = CornerStrategy::none;  // the board waits
   Plan plan = plan_figure(figure, p, order);

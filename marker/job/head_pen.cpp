@@ -2,10 +2,19 @@
 
 namespace mark {
 
+HeadDynamics dynamics_of(const HeadProfile& profile) {
+  return {profile.lag_s(), profile.inertia_s2(), profile.max_accel_mm_s2};
+}
+
+Pen pen_for_profile(const HeadProfile& profile, CornerStrategy strategy, double mark_speed_mm_s,
+                    double tick_s, const PenRules& rules) {
+  return default_pen(strategy, dynamics_of(profile), mark_speed_mm_s,
+                     kJumpSpeedShare * profile.max_speed_mm_s, tick_s, rules);
+}
+
 Pen pen_for_head(const HeadModel& head, CornerStrategy strategy, double mark_speed_mm_s,
                  double tick_s, const PenRules& rules) {
-  return default_pen(strategy, head.tau_s, mark_speed_mm_s, kJumpSpeedShare * head.max_speed_mm_s,
-                     tick_s, rules);
+  return pen_for_profile(datasheet_profile(head), strategy, mark_speed_mm_s, tick_s, rules);
 }
 
 }  // namespace mark

@@ -1,7 +1,9 @@
 #pragma once
-// The default pen for a head: every delay and extension from its tracking error τ, the jump
-// speed from its positioning limit.
+// The default pen for a head: every delay, extension and rate from the planner's model of the
+// head (a head profile: identified by `marker head identify`, or the datasheet's figures), the
+// jump speed from its positioning limit.
 #include "driver/head_model.hpp"
+#include "marker/head/head_profile.hpp"
 #include "marker/plan/pen.hpp"
 
 namespace mark {
@@ -11,6 +13,12 @@ namespace mark {
 // would no longer follow the first-order model the delays and run-ins are built on.
 inline constexpr double kJumpSpeedShare = 0.5;
 
+// The planner's view of a profile: lag, inverse-filter term, acceleration limit.
+HeadDynamics dynamics_of(const HeadProfile& profile);
+
+Pen pen_for_profile(const HeadProfile& profile, CornerStrategy strategy, double mark_speed_mm_s,
+                    double tick_s = 10e-6, const PenRules& rules = {});
+// pen_for_profile with the head's datasheet profile.
 Pen pen_for_head(const HeadModel& head, CornerStrategy strategy, double mark_speed_mm_s,
                  double tick_s = 10e-6, const PenRules& rules = {});
 

@@ -144,7 +144,7 @@ JobHeader job_header(const JobSpec& spec, const CompiledJob& job, const DeviceDe
   if (device.level == DeviceLevel::samples) {
     // The locus, the delay line's tail (at most the longer delay and its off sample) and the
     // drain's closing safe sample.
-    h.expected_samples = LocusGenerator::count_samples(job.plan.commands, spec.pen.tick_s) +
+    h.expected_samples = LocusGenerator::count_samples(job.plan) +
                          std::max(job.laser_on_ticks, job.laser_off_ticks) + 3;
     h.lit_paths = intended_polylines(job.figure, 0.05);
   }

@@ -38,6 +38,23 @@ void check_pen(const Pen& pen, const HeadModel& head) {
                    pen.min_run_in_mm, pen.run_out_mm, pen.settle_mm})
     if (!(d >= 0) || !std::isfinite(d))
       throw InputError("pen delays and extension lengths must be finite and not negative");
+  if (pen.lookahead || pen.feed_forward()) {
+    struct Rate {
+      double value;
+      const char* what;
+    };
+    for (const Rate& r : {Rate{pen.accel_mm_s2, "look-ahead acceleration"},
+                          Rate{pen.jump_accel_mm_s2, "look-ahead jump acceleration"},
+                          Rate{pen.curve_accel_mm_s2, "look-ahead curve acceleration"}})
+      if (!(r.value > 0) || !(r.value <= head.max_accel_mm_s2))
+        throw InputError(std::string(r.what) + " " + num(r.value, 0) + " mm/s² is outside head " +
+                         head.name + "'s limits (above 0, at most " +
+                         num(head.max_accel_mm_s2, 0) + " mm/s²)");
+    for (double d : {pen.junction_dv_mm_s, pen.laser_switch_speed_mm_s, pen.min_lit_speed_mm_s,
+                     pen.accel_limit_mm_s2, pen.ff_lag_s, pen.ff_inertia_s2})
+      if (!(d >= 0) || !std::isfinite(d))
+        throw InputError("look-ahead and feed-forward parameters must be finite and not negative");
+  }
 }
 
 void check_plan(const Plan& plan, const HeadModel& head) {

@@ -35,7 +35,7 @@ DrainOptions drain_options(const JobSpec& spec, const JobOptions& options,
 }  // namespace
 
 double locus_ink_fraction(const Plan& plan, std::uint64_t samples) {
-  LocusGenerator locus(plan.commands, plan.pen.tick_s);
+  LocusGenerator locus(plan);
   std::vector<ScanSample> block(4096);
   std::uint64_t seen = 0, lit_before = 0, lit_total = 0;
   while (std::size_t n = locus.generate(block.data(), block.size())) {
@@ -58,9 +58,8 @@ void run_samples(const JobSpec& spec, const JobOptions& options, SampleDevice<Sc
   LaserDelayLine delay(result.job.laser_on_ticks, result.job.laser_off_ticks);
   Drain<ScanSample> drain(memory, device, drain_options(spec, options, desc), &delay);
   std::vector<ScanSample> buffer(std::max(options.block, options.first_block));
-  LocusGenerator locus(plan.commands, tick);
-  const std::uint64_t total =
-      options.progress ? LocusGenerator::count_samples(plan.commands, tick) : 0;
+  LocusGenerator locus(plan);
+  const std::uint64_t total = options.progress ? LocusGenerator::count_samples(plan) : 0;
   // Everything the job touches is allocated now; lock it in RAM so no page fault stalls the
   // drain (real time only: virtual time has no deadlines to miss).
   if (!options.virtual_time && options.realtime) result.memory_locked = lock_memory();

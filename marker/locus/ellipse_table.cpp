@@ -72,8 +72,24 @@ void EllipseTable::build(const Element& ellipse) {
   // The summed pieces agree with the whole arc's adaptive length to ~1e-15; pin the end to it.
   const double scale = ellipse.length_between(0.0, 1.0) / nodes_.back().s;
   for (Node& n : nodes_) n.s *= scale;
-  for (std::size_t j = 0; j + 1 < nodes_.size(); ++j)
-    nodes_[j].inv_len = 1.0 / (nodes_[j + 1].s - nodes_[j].s);
+  for (std::size_t j = 0; j + 1 < nodes_.size(); ++j) {
+    Node& a = nodes_[j];
+    const Node& b = nodes_[j + 1];
+    const double len = b.s - a.s, len2 = len * len;
+    a.inv_len = 1.0 / len;
+    // The Hermite basis (h0 = 1 − h5, h5 = 10t³ − 15t⁴ + 6t⁵, h1, h4 on the tangents scaled by
+    // len, h2, h3 on the curvatures scaled by len²) gathered by powers of t.
+    for (int k = 0; k < 2; ++k) {
+      const double dp = b.p[k] - a.p[k], ta = len * a.tan[k], tb = len * b.tan[k];
+      const double ka = len2 * a.curv[k], kb = len2 * b.curv[k];
+      a.c[k][0] = a.p[k];
+      a.c[k][1] = ta;
+      a.c[k][2] = 0.5 * ka;
+      a.c[k][3] = 10 * dp - 6 * ta - 4 * tb - 1.5 * ka + 0.5 * kb;
+      a.c[k][4] = -15 * dp + 8 * ta + 7 * tb + 1.5 * ka - kb;
+      a.c[k][5] = 6 * dp - 3 * ta - 3 * tb - 0.5 * ka + 0.5 * kb;
+    }
+  }
 }
 
 }  // namespace mark

@@ -8,7 +8,7 @@
 // curvature vector d²P/ds². Between two nodes the point is the quintic Hermite interpolant in
 // arc length of those exact values and derivatives: its error falls with the sixth power of the
 // tangent's turn per interval (< 1e-9 of the local radius here), so the samples need no Newton
-// iteration, no quadrature and no trigonometric call — about thirty flops each.
+// iteration, no quadrature and no trigonometric call — a Horner polynomial per coordinate.
 #include <cstddef>
 #include <vector>
 
@@ -27,20 +27,22 @@ class EllipseTable {
   // The point at arc length s ∈ [0, length()] from the arc's start. `node` is a cursor: lookups
   // at increasing s walk forward from it (start it at 0).
   Point point_at(double s, std::size_t& node) const {
-    const std::size_t last = nodes_.size() - 2;
-    if (s < nodes_[node].s) node = 0;
-    while (node < last && s > nodes_[node + 1].s) ++node;
-    const Node& a = nodes_[node];
-    const Node& b = nodes_[node + 1];
-    const double len = b.s - a.s;
-    const double t = (s - a.s) * a.inv_len, t2 = t * t, t3 = t2 * t;
-    const double h5 = t3 * (10 - 15 * t + 6 * t2), h0 = 1 - h5;
-    const double h1 = len * t * (1 + t2 * (-6 + t * (8 - 3 * t)));
-    const double h4 = len * t3 * (-4 + t * (7 - 3 * t));
-    const double h2 = len * len * t2 * (0.5 + t * (-1.5 + t * (1.5 - 0.5 * t)));
-    const double h3 = len * len * t3 * (0.5 + t * (-1 + 0.5 * t));
-    return {h0 * a.p[0] + h5 * b.p[0] + h1 * a.tan[0] + h4 * b.tan[0] + h2 * a.curv[0] + h3 * b.curv[0],
-            h0 * a.p[1] + h5 * b.p[1] + h1 * a.tan[1] + h4 * b.tan[1] + h2 * a.curv[1] + h3 * b.curv[1]};
+    const Node& a = find(s, node);
+    const double t = (s - a.s) * a.inv_len;
+    return {horner(a.c[0], t), horner(a.c[1], t)};
+  }
+
+  // The point, the unit tangent dP/ds and (WithCurvature) the curvature vector d²P/ds² at arc
+  // length s: the interpolant and its derivatives, for feed-forward, which needs the path's
+  // velocity and acceleration. Same cursor as point_at.
+  template <bool WithCurvature = true>
+  void frame_at(double s, std::size_t& node, Point& p, Point& tangent, Point& curvature) const {
+    const Node& a = find(s, node);
+    const double t = (s - a.s) * a.inv_len, il = a.inv_len;
+    p = {horner(a.c[0], t), horner(a.c[1], t)};
+    tangent = {derivative(a.c[0], t) * il, derivative(a.c[1], t) * il};
+    if constexpr (WithCurvature)
+      curvature = {second_derivative(a.c[0], t) * il * il, second_derivative(a.c[1], t) * il * il};
   }
 
  private:
@@ -50,7 +52,25 @@ class EllipseTable {
     double p[2] = {0, 0};     // the point
     double tan[2] = {0, 0};   // dP/ds: the unit tangent in the direction of travel
     double curv[2] = {0, 0};  // d²P/ds²: the curvature vector
+    // The interval's quintic Hermite interpolant in the power basis of t = (s − s_node)/len,
+    // per coordinate: P(t) = c0 + c1·t + … + c5·t⁵ (Horner: five multiply-adds a sample).
+    double c[2][6] = {};
   };
+  static double horner(const double (&c)[6], double t) {
+    return c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
+  }
+  static double derivative(const double (&c)[6], double t) {
+    return c[1] + t * (2 * c[2] + t * (3 * c[3] + t * (4 * c[4] + t * 5 * c[5])));
+  }
+  static double second_derivative(const double (&c)[6], double t) {
+    return 2 * c[2] + t * (6 * c[3] + t * (12 * c[4] + t * 20 * c[5]));
+  }
+  const Node& find(double s, std::size_t& node) const {
+    const std::size_t last = nodes_.size() - 2;
+    if (s < nodes_[node].s) node = 0;
+    while (node < last && s > nodes_[node + 1].s) ++node;
+    return nodes_[node];
+  }
   std::vector<Node> nodes_;
 };
 

@@ -38,6 +38,24 @@ inline void put(ScanSample& s, const Point& p, bool laser) {
 LocusGenerator::LocusGenerator(std::span<const Command> commands, double tick_s)
     : commands_(commands), tick_s_(tick_s) {}
 
+namespace {
+bool plans_speeds(const Pen& pen) { return pen.lookahead || pen.feed_forward(); }
+}  // namespace
+
+LocusGenerator::LocusGenerator(const Plan& plan)
+    : commands_(plan.commands), tick_s_(plan.pen.tick_s) {
+  if (plans_speeds(plan.pen))
+    profiled_ = std::make_unique<PlannedLocus>(
+        plan.commands, plan.pen.tick_s, FeedForward{plan.pen.ff_lag_s, plan.pen.ff_inertia_s2});
+}
+
+LocusGenerator::~LocusGenerator() = default;
+
+std::uint64_t LocusGenerator::count_samples(const Plan& plan) {
+  return plans_speeds(plan.pen) ? PlannedLocus::count_samples(plan.commands, plan.pen.tick_s)
+                                : count_samples(plan.commands, plan.pen.tick_s);
+}
+
 std::uint64_t LocusGenerator::count_samples(std::span<const Command> commands, double tick_s) {
   double ideal = 0;
   std::uint64_t counted = 0;
@@ -68,6 +86,11 @@ bool LocusGenerator::advance() {
 }
 
 std::size_t LocusGenerator::generate(ScanSample* out, std::size_t capacity) {
+  if (profiled_) {
+    const std::size_t n = profiled_->generate(out, capacity);
+    emitted_ += n;
+    return n;
+  }
   std::size_t written = 0;
   while (written < capacity) {
     if (remaining_ == 0 && !advance()) break;

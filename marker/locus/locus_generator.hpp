@@ -12,10 +12,13 @@
 // element is traversed over exactly its length.
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 
 #include "marker/locus/path_walker.hpp"
+#include "marker/locus/planned_locus.hpp"
 #include "marker/plan/command.hpp"
+#include "marker/plan/plan.hpp"
 #include "ringbuffer/scan_sample.hpp"
 
 namespace mark {
@@ -23,14 +26,22 @@ namespace mark {
 class LocusGenerator {
  public:
   LocusGenerator(std::span<const Command> commands, double tick_s);
+  // A plan's locus at its pen's tick: constant-speed as above, or — when the pen plans speeds
+  // (look-ahead, feed-forward) — the planned locus with the pen's feed-forward
+  // (planned_locus.hpp). The plan must outlive the generator.
+  explicit LocusGenerator(const Plan& plan);
+  ~LocusGenerator();
 
   // Writes up to `capacity` samples to `out`; returns how many (0 once the job is done).
   std::size_t generate(ScanSample* out, std::size_t capacity);
-  bool done() const { return remaining_ == 0 && next_ >= commands_.size(); }
+  bool done() const {
+    return profiled_ ? profiled_->done() : remaining_ == 0 && next_ >= commands_.size();
+  }
   std::uint64_t samples_written() const { return emitted_; }
 
   // The number of samples the commands produce at this tick, without generating them.
   static std::uint64_t count_samples(std::span<const Command> commands, double tick_s);
+  static std::uint64_t count_samples(const Plan& plan);
 
  private:
   // Sets up the next command with at least one sample; false when none is left.
@@ -38,6 +49,7 @@ class LocusGenerator {
 
   std::span<const Command> commands_;
   double tick_s_;
+  std::unique_ptr<PlannedLocus> profiled_;  // set when the pen plans speeds
   std::size_t next_ = 0;
   double ideal_ticks_ = 0;      // ideal end time of the commands so far, in ticks
   std::uint64_t emitted_ = 0;   // samples written (= ticks elapsed)

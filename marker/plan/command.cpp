@@ -1,6 +1,16 @@
 #include "marker/plan/command.hpp"
 
+#include "marker/plan/speed_profile.hpp"
+
 namespace mark {
+
+double Command::move_duration_s() const {
+  if (kind == CommandKind::dwell || !(length > 0)) return 0;
+  if (!planned()) return length / speed_mm_s;
+  return SpeedProfile::make(length, entry_speed_mm_s, exit_speed_mm_s, speed_mm_s, accel_mm_s2,
+                            decel_mm_s2)
+      .duration;
+}
 
 Command Command::jump(const Point& from, const Point& to, double speed_mm_s) {
   return {CommandKind::jump, CommandRole::jump, Element::line(from, to, false), speed_mm_s, 0,

@@ -54,6 +54,32 @@ struct Pen {
   // The head's tracking error τ: sizes the automatic run-ins and variable jump delays.
   double tracking_error_s = 0;
 
+  // Look-ahead speed planning (every corner strategy; speed_plan.hpp): each move's speed is
+  // planned over the whole job ahead — at most its own speed, at most √(a·r) on a curve of
+  // radius r, changing at the given rates, down to a stop wherever the path turns sharply — and
+  // lit power follows the speed, so the dose per mm stays constant.
+  bool lookahead = false;
+  double accel_mm_s2 = 0;        // lit moves, and a laser-off move's arrival at a lit start
+  double jump_accel_mm_s2 = 0;   // laser-off moves
+  double curve_accel_mm_s2 = 0;  // centripetal, on every curve
+  double junction_dv_mm_s = 0;   // velocity change allowed where the path turns without a stop
+  // The head's acceleration limit: on a curve the tangential and centripetal accelerations
+  // together, √(a_t² + a_c²), stay within it (0: no such check).
+  double accel_limit_mm_s2 = 0;
+  // Speed at which the laser may switch where the path runs straight on (blanking's run-ins
+  // and run-outs); elsewhere, and by default, it switches at rest.
+  double laser_switch_speed_mm_s = 0;
+  // Lit moves go dark below this speed (0: never).
+  double min_lit_speed_mm_s = 0;
+
+  // Feed-forward (needs look-ahead): every sample is the desired beam position pre-compensated
+  // by the planner's model of the head, x + lag·ẋ + inertia·ẍ (first order: lag τ; second
+  // order: lag 2ζ/ωn, inertia 1/ωn²), so the beam rather than the command follows the path.
+  // Both 0: off.
+  double ff_lag_s = 0;
+  double ff_inertia_s2 = 0;
+  bool feed_forward() const { return ff_lag_s > 0 || ff_inertia_s2 > 0; }
+
   // Seconds → whole ticks of this pen (rounded to nearest).
   std::uint32_t ticks(double seconds) const;
 };
@@ -76,9 +102,36 @@ struct PenRules {
   // Corners turning less than this stay lit (the lag's corner cut there is below a few µm at
   // marking speeds where the rest of the figure keeps its quality).
   double blank_angle_deg = 8.0;
+
+  // Look-ahead speed planning, and feed-forward of the head model (which implies look-ahead).
+  // With feed-forward the beam has no lag left to wait for: the laser delays, scanner delays
+  // and settling run-ins become zero, and blanking's run-in and run-out are sized for
+  // acceleration instead — multiples run_in / run_out of the distance v²/(2a) the mirrors need
+  // to reach the marking speed. The laser still switches at rest (it switches on a tick: at
+  // speed its edge would wander by v·tick), so under feed-forward blanking's lines only add
+  // travel — cps shows it; the corner strategy that gains is none, stopping lit at corners.
+  bool lookahead = false;
+  bool feed_forward = false;
+  // Rates as shares of the head's acceleration limit: lit moves (and arrivals at a lit start),
+  // laser-off moves, centripetal on curves; the velocity step allowed at a turn taken at speed.
+  double accel_share = 0.5, jump_accel_share = 0.8, curve_accel_share = 0.5;
+  double junction_dv_mm_s = 100;
+  // Lit moves dark below this share of the marking speed (Command::min_lit_speed_mm_s).
+  double min_lit_speed_share = 0.03;
 };
 
-// A pen for a head with tracking error `tracking_error_s`, every parameter from the rules.
+// What the planner knows of a head: its ramp lag (τ, or 2ζ/ωn), the second-order term of its
+// inverse (1/ωn²; 0 for a first-order model) and its per-axis acceleration limit.
+struct HeadDynamics {
+  double lag_s = 0;
+  double inertia_s2 = 0;
+  double max_accel_mm_s2 = 0;
+};
+
+// A pen for a head, every parameter from the rules and the head's dynamics.
+Pen default_pen(CornerStrategy strategy, const HeadDynamics& head, double mark_speed_mm_s,
+                double jump_speed_mm_s, double tick_s = 10e-6, const PenRules& rules = {});
+// The same for a head known only by its tracking error (no look-ahead or feed-forward).
 Pen default_pen(CornerStrategy strategy, double tracking_error_s, double mark_speed_mm_s,
                 double jump_speed_mm_s, double tick_s = 10e-6, const PenRules& rules = {});
 

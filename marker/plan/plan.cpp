@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "marker/plan/plan_builder.hpp"
+#include "marker/plan/speed_plan.hpp"
 
 namespace mark {
 
@@ -37,14 +38,25 @@ double turn_angle_rad(const Element& a, const Element& b) {
 Box Plan::bounds() const {
   Box box;
   box.add(home);
-  for (const Command& c : commands) box.add(c.path.bounds());
+  for (const Command& c : commands) {
+    Box b = c.path.bounds();
+    if (pen.feed_forward() && c.kind != CommandKind::dwell) {
+      // The command leads the path by lag·v + inertia·a at most: speed and the larger of the
+      // tangential and centripetal rates (both bounded by the plan).
+      const double a = std::max({c.accel_mm_s2, c.decel_mm_s2, pen.curve_accel_mm_s2});
+      const double lead = pen.ff_lag_s * c.speed_mm_s + pen.ff_inertia_s2 * 2 * a;
+      b.min -= Point(lead, lead);
+      b.max += Point(lead, lead);
+    }
+    box.add(b);
+  }
   return box;
 }
 
 double Plan::duration_s() const {
   double t = 0;
   for (const Command& c : commands)
-    t += c.kind == CommandKind::dwell ? c.dwell_ticks * pen.tick_s : c.length_mm() / c.speed_mm_s;
+    t += c.kind == CommandKind::dwell ? c.dwell_ticks * pen.tick_s : c.move_duration_s();
   return t;
 }
 
@@ -67,6 +79,7 @@ Plan plan_strokes(const std::vector<Stroke>& ordered_strokes, const Pen& pen, co
       case CornerStrategy::blanking: plan_stroke_blanking(b, s); break;
     }
   }
+  if (pen.lookahead || pen.feed_forward()) plan_speeds(plan.commands, plan.pen);
   return plan;
 }
 

@@ -59,6 +59,24 @@ TEST(Quality, ParallelOffsetGivesDeviationAndCoverageByRadius) {
   }
 }
 
+// A lit run is measured against the stroke it marks (the one nearest to most of its points): a
+// beam that leaves its stroke and runs on along a neighbouring one 50 µm away is 50 µm off,
+// although every point it passed lies on some stroke.
+TEST(Quality, DeviationIsAgainstTheStrokeTheRunMarks) {
+  Case c;
+  c.intended = {dense({0, 0}, {2, 0}), dense({0, 0.05}, {2, 0.05})};
+  std::vector<Vec2> run = dense({0, 0}, {1.2, 0});
+  for (const Vec2& p : dense({1.2, 0.05}, {2, 0.05})) run.push_back(p);
+  c.lit.runs = {run};
+  mark_evenly(c.dose, run);
+  Quality q = c.eval();
+  EXPECT_NEAR(q.max_deviation_um, 50, 1e-6);
+  // Marked as two runs, one per stroke, the same points are on their strokes.
+  c.lit.runs = {dense({0, 0}, {1.2, 0}), dense({1.2, 0.05}, {2, 0.05})};
+  q = c.eval();
+  EXPECT_LT(q.max_deviation_um, 1e-6);
+}
+
 TEST(Quality, CoverageIsTheShareOfStrokeLengthNearALitPath) {
   Case c;
   c.intended = {dense({0, 0}, {2, 0})};

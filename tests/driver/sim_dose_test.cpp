@@ -106,5 +106,53 @@ TEST(SimDose, LitPathsFollowTheBeamOnePolylinePerLitRun) {
   EXPECT_NEAR(lit.runs[1].front().y, 1.0, 1e-3);
 }
 
+// The lit path is relative to the commanded power: a line marked at a fifth of full power is
+// lit from end to end (an absolute threshold of half power would record nothing), and a power
+// that falls along the stroke (speed scaling) keeps the run in one piece.
+TEST(SimDose, LowAndVaryingPowerStillCountsAsLit) {
+  SimScanner sim;
+  Stream s;
+  s.step_to({-2, 0}, 200).move({2, 0}, 500, true).hold(50, false);
+  std::vector<ScanSample> samples = s.samples();
+  for (ScanSample& x : samples) x.power = 51;  // 20 %
+  sim.write(samples);
+  ASSERT_EQ(sim.lit_paths().runs.size(), 1u);
+  EXPECT_NEAR(sim.lit_paths().runs[0].front().x, -2.0, 1e-3);
+  // The laser goes off with the last command sample, the beam τ·v behind it.
+  EXPECT_NEAR(sim.lit_paths().runs[0].back().x, 2.0 - 500 * head_sl10().tau_s, 1e-3);
+
+  SimScannerOptions o;
+  o.laser_rise_s = 20e-6;
+  SimScanner ramp(o);
+  samples = s.samples();
+  int lit = 0, n = 0;
+  for (ScanSample& x : samples) n += x.laser;
+  for (ScanSample& x : samples)
+    if (x.laser) x.power = static_cast<std::uint8_t>(255 - 250 * lit++ / n);  // 255 → 5
+  ramp.write(samples);
+  EXPECT_EQ(ramp.lit_paths().runs.size(), 1u);
+}
+
+// After laser-off the falling power counts as lit down to half of the last on-power, so a slow
+// laser's tail is part of the mark (at full and at low pen power alike).
+TEST(SimDose, FallingPowerIsLitUntilHalfOfTheLastOnPower) {
+  for (std::uint8_t power : {std::uint8_t{255}, std::uint8_t{40}}) {
+    SimScannerOptions o;
+    o.laser_rise_s = 50e-6;
+    SimScanner sim(o);
+    Stream s;
+    s.hold(100, true).move({1, 0}, 1000, false);  // lit dwell, then off while moving 1 m/s
+    std::vector<ScanSample> samples = s.samples();
+    for (ScanSample& x : samples) x.power = power;
+    sim.write(samples);
+    ASSERT_EQ(sim.lit_paths().runs.size(), 1u);
+    // Power falls to half after τr·ln 2 ≈ 34.7 µm of travel (the command lags the beam by τ,
+    // so the beam has moved a little less).
+    const double end = sim.lit_paths().runs[0].back().x;
+    EXPECT_GT(end, 0.0);
+    EXPECT_LT(end, 1000 * 50e-6 * std::log(2.0) + 1e-3);
+  }
+}
+
 }  // namespace
 }  // namespace mark

@@ -1,8 +1,7 @@
 // The simulated scanner against the numbers in dynamics.md §8 (first-order model): ramp lag
-// τ·v within 2 %, a 1 %-of-field step settling to within 10 % of the step in 2.0–2.6 τ, the
-// 90° corner passing 0.51·v·τ from the corner point with no polygon delay and 0.36·v·τ with a
-// 0.5 τ pause (±3 %); the 10 %-of-field step times the presets were fitted to; the
-// second-order model's ramp lag and overshoot.
+// τ·v within 2 %, the step settle times of the presets, the 90° corner passing 0.51·v·τ from the
+// corner point with no polygon delay and 0.36·v·τ with a 0.5 τ pause (±3 %); the second-order
+// model's ramp lag and overshoot.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -69,41 +68,33 @@ double settle_time(const Trace& tr, Vec2 target, double band) {
   return last;
 }
 
-TEST(SimValidation, OnePercentStepSettlesIn2To2_6Tau) {
-  for (const HeadModel& h : {head_sl10(), head_sl14(), head_cheap()}) {
-    Trace tr;
-    SimScanner sim = make_sim(h, tr);
-    const double step = 0.01 * h.field_mm;
-    Stream s;
-    s.step_to({step, 0}, static_cast<int>(10 * h.tau_s / 10e-6));
-    sim.write(s.samples());
-    const double t = settle_time(tr, {step, 0}, 0.1 * step);
-    EXPECT_GE(t / h.tau_s, 2.0) << h.name;
-    EXPECT_LE(t / h.tau_s, 2.6) << h.name;
-  }
-}
-
-TEST(SimValidation, TenPercentStepTakesTheFittedDatasheetTime) {
-  // Settle to 0.1 % of the field, as SCANLAB specifies step response times.
+// Step settle times (to 0.1 % of the field) with the presets' conservative accelerations
+// (head_model.cpp): the 1 %-of-field step is acceleration-limited now and settles a little later
+// than SCANLAB's 10 mm heads (0.23–0.35 ms, 2.1–2.5 τ of their own τ), the 10 % step within or
+// above the datasheet times. Windows: the simulated figure ±5 %, so a change of the physics shows.
+TEST(SimValidation, StepSettleTimesWithTheConservativeAccelerations) {
   struct Case {
     HeadModel head;
-    double lo_ms, hi_ms;
+    double one_percent_ms, ten_percent_ms;
   };
-  for (const Case& c : {Case{head_sl10(), 0.85, 1.0}, Case{head_sl14(), 1.1, 1.4},
-                        Case{head_cheap(), 1.6, 2.0}}) {
-    Trace tr;
-    SimScanner sim = make_sim(c.head, tr);
-    const double step = 0.1 * c.head.field_mm;
-    Stream s;
-    s.step_to({step, 0}, 400);
-    sim.write(s.samples());
-    const double t_ms = settle_time(tr, {step, 0}, 0.001 * c.head.field_mm) * 1e3;
-    EXPECT_GE(t_ms, c.lo_ms) << c.head.name;
-    EXPECT_LE(t_ms, c.hi_ms) << c.head.name;
-    // The speed limit holds throughout.
-    for (std::size_t i = 1; i < tr.t.size(); ++i)
-      ASSERT_LE(norm(tr.p[i] - tr.p[i - 1]) / (tr.t[i] - tr.t[i - 1]),
-                c.head.max_speed_mm_s * (1 + 1e-9));
+  for (const Case& c : {Case{head_sl10(), 0.356, 0.958}, Case{head_sl14(), 0.643, 1.776},
+                        Case{head_cheap(), 0.640, 1.940},
+                        Case{head_sa14(), 0.399, 1.380}}) {
+    for (double share : {0.01, 0.1}) {
+      Trace tr;
+      SimScanner sim = make_sim(c.head, tr);
+      const double step = share * c.head.field_mm;
+      Stream s;
+      s.step_to({step, 0}, 400);
+      sim.write(s.samples());
+      const double t_ms = settle_time(tr, {step, 0}, 0.001 * c.head.field_mm) * 1e3;
+      const double want = share == 0.01 ? c.one_percent_ms : c.ten_percent_ms;
+      EXPECT_NEAR(t_ms, want, 0.05 * want) << c.head.name << " " << share * 100 << " % step";
+      // The speed limit holds throughout.
+      for (std::size_t i = 1; i < tr.t.size(); ++i)
+        ASSERT_LE(norm(tr.p[i] - tr.p[i - 1]) / (tr.t[i] - tr.t[i - 1]),
+                  c.head.max_speed_mm_s * (1 + 1e-9));
+    }
   }
 }
 

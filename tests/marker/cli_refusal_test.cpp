@@ -182,7 +182,7 @@ TEST(CliRefusal, MarkOptions) {
       {{"mark", "X", "--speed", "fast", "--head", "SL14"},
        "--speed: 'fast' is neither auto nor a number (range: above 0, up to 16000 mm/s (head SL14's positioning "
        "limit))"},
-      {{"mark", "X", "--jump-speed", "1e9"}, "--jump-speed: 1e9 is outside the range 0, or 1 to 100000 mm/s"},
+      {{"mark", "X", "--jump-speed", "1e9"}, "--jump-speed: 1e9 is outside the range 1 to 100000 mm/s"},
       {{"mark", "X", "--jump-speed", "50000"},
        "--jump-speed: 50000 is outside the range 1 to 19200 mm/s (head SL10's positioning limit)"},
       {{"mark", "X", "--dose-png", "OUT/dose.svg"},

@@ -119,7 +119,7 @@ TEST(JobFile, MalformedFilesGiveOneLineErrors) {
       {with("\"passes\": 2", "\"passes\": 1.5"), "job.json: pens.fine.passes: expected a whole number, found a fraction"},
       {with("\"speed_mm_s\": 800", "\"speed_mm_s\": 1e9"), "job.json: pens.fine.speed_mm_s: 1e+09 mm/s is outside 0.001 to 16000 mm/s"},
       {with("\"corner\": \"delays\"", "\"corner\": \"round\""), "job.json: pens.fine.corner: \"round\" is not one of blanking, delays, none"},
-      {with("\"SL14\"", "\"SL99\""), "job.json: head.model: \"SL99\" is not a head (SL10, SL14, cheap)"},
+      {with("\"SL14\"", "\"SL99\""), "job.json: head.model: \"SL99\" is not a head (SL10, SL14, cheap, SA14)"},
       {with("\"step\": -7", "\"step\": 0"), "job.json: counters.vin.step: a counter's step cannot be 0"},
       {with("\"limit\": 999999", "\"limit\": 9999999"), "job.json: counters.serial.width: 9999999 needs 7 decimal digits, the width is 6 (lower the limit or widen the field)"},
       {with("\"start\": 9223372036854775000", "\"start\": 9223372036854775808"), "job.json: counters.vin.start: 9223372036854775808 does not fit in 64 bits (at most 9223372036854775807)"},

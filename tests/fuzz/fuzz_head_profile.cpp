@@ -1,0 +1,36 @@
+// libFuzzer target for parse_head_profile: it either throws InputError (a bad file, reported
+// with its key and range) or returns a profile the planner can trust — the chosen model's time
+// constants and both limits finite and positive, its ramp lag positive. Anything else (a crash,
+// a sanitizer report, another exception, a broken invariant) is a bug.
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string_view>
+
+#include "fonts/error.hpp"
+#include "marker/head/head_profile.hpp"
+
+namespace {
+
+[[noreturn]] void broken(const char* what) {
+  std::fprintf(stderr, "fuzz invariant broken: %s\n", what);
+  std::abort();
+}
+
+bool positive(double v) { return std::isfinite(v) && v > 0; }
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  try {
+    const mark::HeadProfile p = mark::parse_head_profile(text, "fuzz.json");
+    if (!positive(p.lag_s())) broken("ramp lag not positive");
+    if (!std::isfinite(p.inertia_s2()) || p.inertia_s2() < 0) broken("inverse-filter term invalid");
+    if (!positive(p.max_speed_mm_s) || !positive(p.max_accel_mm_s2)) broken("limits not positive");
+    if (!positive(p.field_mm) || !positive(p.tick_s)) broken("field or tick not positive");
+  } catch (const mark::InputError&) {
+  }
+  return 0;
+}

@@ -535,7 +535,7 @@ int main(int argc, char** argv) {
           j["mark_time_s"] = r.trial->mark_time_s;
           j["max_deviation_um"] = r.trial->quality.max_deviation_um;
           j["rms_deviation_um"] = r.trial->quality.rms_deviation_um;
-          j["coverage"] = r.trial->quality.coverage;
+          j["coverage_fraction"] = r.trial->quality.coverage;
           j["dose_ratio_max"] = r.trial->quality.dose_ratio_max;
           j["overshoot_um"] = r.trial->quality.overshoot_um;
           j["mark_args"] = mark_args(r);

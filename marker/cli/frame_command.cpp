@@ -49,7 +49,7 @@ Command make_frame_command() {
         add_ranged_option(*sub, "--speed", a->speed_mm_s, "red-pointer speed, mm/s", kSpeedRange)->capture_default_str();
         add_ranged_option(*sub, "--laps", a->laps, "stop after this many laps (0: until Ctrl-C)",
                           WholeRange{0, 1'000'000'000});
-        sub->add_flag("--json", a->json, "print {laps, packets, stopped, shape, width, height} at the end");
+        sub->add_flag("--json", a->json, "print {laps, packets, stopped, shape, width_mm, height_mm, speed_mm_s} at the end");
         add_lmc_options(*sub, a->lmc);
         return sub;
       },
@@ -94,7 +94,7 @@ Command make_frame_command() {
         if (a->json) {
           std::cout << nlohmann::json{{"laps", r.laps},           {"packets", r.packets},
                                       {"stopped", r.stopped},     {"shape", a->shape},
-                                      {"width", b.width()},       {"height", b.height()},
+                                      {"width_mm", b.width()}, {"height_mm", b.height()},
                                       {"speed_mm_s", a->speed_mm_s}}
                            .dump()
                     << "\n";

@@ -78,7 +78,14 @@ void add_pen_options(CLI::App& app, PenArgs& a, bool with_speed) {
 }
 
 HeadProfile planner_profile(const PenArgs& a, const HeadModel& head) {
-  return a.head_profile.empty() ? datasheet_profile(head) : load_head_profile(a.head_profile);
+  if (a.head_profile.empty()) return datasheet_profile(head);
+  HeadProfile p = load_head_profile(a.head_profile);
+  // A profile identifies one head: planning another head with it marks badly without a word.
+  if (!p.head.empty() && p.head != head.name)
+    throw InputError("--head-profile " + a.head_profile + ": identified on head " + p.head +
+                     ", but the head is " + head.name + " (identify this head: marker head identify --head " +
+                     head.name + ")");
+  return p;
 }
 
 Pen make_pen(const PenArgs& a, const HeadModel& head) {
@@ -91,7 +98,8 @@ Pen make_pen(const PenArgs& a, const HeadModel& head) {
   check_range("--tick", a.tick_us, Range{kMinTick_s * 1e6, head.max_tick_s() * 1e6, "µs (20 % of the head's τ)"});
   PenRules rules;
   rules.lookahead = a.lookahead;
-  rules.feed_forward = a.feed_forward || a.ff_lag_us || a.ff_inertia_us2;
+  // A model given by hand turns feed-forward on; a zero one compensates nothing, so it does not.
+  rules.feed_forward = a.feed_forward || a.ff_lag_us.value_or(0) > 0 || a.ff_inertia_us2.value_or(0) > 0;
   Pen pen = pen_for_profile(planner_profile(a, head), parse_corner_strategy(a.corner),
                             a.speed_mm_s, a.tick_us * 1e-6, rules);
   if (a.jump_speed_mm_s) {

@@ -227,7 +227,7 @@ inline void PlannedLocus::emit(ScanSample& o, double tau, double s, double v) {
       x += ff_.inertia_s2 * acc;
     }
     // Power ∝ the path length this tick covers (the sample's laser state holds for the tick
-    // ending at it): constant pulse spacing, so the dose per mm is the same at every speed.
+    // ending at it), so the dose per mm is the same at every speed (pulses still land v / f apart).
     const double path = path0_ + s;
     const double tick_speed = (path - last_path_) * inv_tick_;
     last_path_ = path;

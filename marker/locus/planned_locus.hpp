@@ -12,8 +12,8 @@
 // acceleration a·T + v²·K (T unit tangent, K curvature vector), and the command
 //   x = P + lag·(v·T) + inertia·(a·T + v²·K)
 // (feed-forward: the identified model's inverse; 0/0 leaves x = P). A lit move's power is the
-// path length covered in the sample's tick over full_power_speed·tick (constant pulse spacing:
-// the mean speed over the tick, which the laser state covers), at least 1/255 so the laser bit
+// path length covered in the sample's tick over full_power_speed·tick (constant dose per mm:
+// the mean speed over the tick, which the laser state covers; the pulses still land v / f apart), at least 1/255 so the laser bit
 // and the power agree; where that tick speed is below the move's min_lit_speed the sample is
 // dark.
 #include <cstddef>

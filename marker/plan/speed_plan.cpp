@@ -54,8 +54,8 @@ void plan_speeds(std::vector<Command>& commands, const Pen& pen) {
   std::vector<double> v(vmax.size(), kInf);
   v.push_back(kInf);
   // On a curve the centripetal acceleration takes part of the head's limit: the tangential rate
-  // is what is left of it (never below a tenth of the pen's rate, the centripetal share giving
-  // way instead).
+  // is what is left of it. The centripetal share is capped at √0.99 of the limit, so at least a
+  // tenth of the limit is always left for speeding up and slowing down.
   const double limit = pen.accel_limit_mm_s2;
   double full_power = 0;
   std::vector<bool> curved(n, false);

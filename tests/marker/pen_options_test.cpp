@@ -85,6 +85,14 @@ TEST(PenOptions, BadValuesAreRefusedByName) {
   EXPECT_NE(error("--corner wavy").find("corner strategy 'wavy'"), std::string::npos);
   EXPECT_NE(error("--speed 0").find("--speed: 0 is outside the range"), std::string::npos);
   EXPECT_NE(error("--head-profile /nonexistent.json").find("cannot be read"), std::string::npos);
+  // A profile identified on another head is refused, naming both.
+  const auto sa14 = test::fresh_temp_file("pen_options_test", "sa14.json");
+  ASSERT_EQ(test::run_cli({"head", "identify", "--head", "SA14", "-o", sa14.string()}).code, 0);
+  EXPECT_NE(error("--head-profile " + sa14.string()).find("identified on head SA14, but the head is SL10"),
+            std::string::npos)
+      << error("--head-profile " + sa14.string());
+  // A zero feed-forward model given by hand compensates nothing: the pen stays without it.
+  EXPECT_FALSE(parse("--ff-lag-us 0 --ff-inertia-us2 0", head_sl10()).feed_forward());
 }
 
 TEST(PenOptions, MarkRunsTheFeedForwardPenOnTheSimulatedHead) {

@@ -280,7 +280,7 @@ TEST(LmcUsbCli, FrameTracesTheBoxWithTheRedPointer) {
   EXPECT_EQ(s.port, 0);
   const auto path = board.red_path();
   ASSERT_EQ(path.size(), 1 + 5 + 4u);
-  const double w = j["width"], h = j["height"];
+  const double w = j["width_mm"], h = j["height_mm"];
   EXPECT_NEAR(path[2].x - path[1].x, w, 0.004);
   EXPECT_NEAR(path[3].y - path[2].y, h, 0.004);
   board.stop_clock();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <variant>
 
 #include "fonts/error.hpp"
@@ -30,6 +31,9 @@ std::size_t chord_count(const Element& e, double tol_mm) {
 // time went to sincos), and the last point is the element's exact end. The recurrence drifts by
 // about k·1e-16 of the radius: far below the chord tolerance for any n a glyph needs. `start`
 // is the element's start point (the caller has it; a circle's first direction comes from it).
+// Points are built coordinate by coordinate, not as Eigen expressions: Eigen stored c and s as
+// two doubles and read them back as one 16-byte vector, a failed store-to-load forward on every
+// chord (a quarter of the conversion's time); the arithmetic, and so every point, is the same.
 template <class F>
 void for_chord_points(const Element& e, const Point& start, std::size_t n, F&& emit) {
   const auto rotate_from = [&](double c, double s, double step, auto&& place) {
@@ -46,7 +50,7 @@ void for_chord_points(const Element& e, const Point& start, std::size_t n, F&& e
                         [&](const CircularArc& a) {
                           const Point u = (start - a.center) / a.radius;
                           rotate_from(u.x(), u.y(), a.sweep / double(n), [&](double c, double s) {
-                            return Point(a.center + a.radius * Point(c, s));
+                            return Point(a.center.x() + a.radius * c, a.center.y() + a.radius * s);
                           });
                         },
                         [&](const EllipticalArc& el) {
@@ -54,7 +58,8 @@ void for_chord_points(const Element& e, const Point& start, std::size_t n, F&& e
                           rotate_from(std::cos(el.start_param), std::sin(el.start_param),
                                       el.sweep / double(n), [&](double c, double s) {
                             const double x = el.rx * c, y = el.ry * s;
-                            return Point(el.center + Point(rc * x - rs * y, rs * x + rc * y));
+                            return Point(el.center.x() + (rc * x - rs * y),
+                                         el.center.y() + (rs * x + rc * y));
                           });
                         }},
              e.geometry());
@@ -82,10 +87,19 @@ class Builder {
     }
     const std::size_t n = chord_count(e, device_.chord_tolerance_mm);
     Point prev = e.start();
-    for_chord_points(e, prev, n, [&](const Point& p) {
-      push(DeviceCommand::mark_to(p.x(), p.y(), speed), true, (p - prev).norm());
-      prev = p;
-    });
+    if (const auto* a = std::get_if<CircularArc>(&e.geometry())) {
+      // Equal steps on a circle give equal chords, 2R·sin(|sweep|/2n): one sine per arc instead
+      // of a square root per chord (ink only; the points are the same either way).
+      const double chord = 2 * a->radius * std::sin(std::abs(a->sweep) / (2 * double(n)));
+      for_chord_points(e, prev, n, [&](const Point& p) {
+        push(DeviceCommand::mark_to(p.x(), p.y(), speed), true, chord);
+      });
+    } else {
+      for_chord_points(e, prev, n, [&](const Point& p) {
+        push(DeviceCommand::mark_to(p.x(), p.y(), speed), true, (p - prev).norm());
+        prev = p;
+      });
+    }
     out_.chords += n;
   }
 
@@ -99,11 +113,15 @@ class Builder {
   void pen(std::uint16_t index) { push(DeviceCommand::select_pen(index), false, 0); }
 
  private:
+  // The test runs for every point, inline; the refusal is out of line so the hot path stays
+  // small (|v| ≤ half is false for NaN; infinities are above half).
   void check(const Point& p) const {
-    const double half = device_.field_mm / 2;
-    if (std::isfinite(p.x()) && std::isfinite(p.y()) && std::abs(p.x()) <= half &&
-        std::abs(p.y()) <= half)
+    if (std::abs(p.x()) <= half_ && std::abs(p.y()) <= half_) [[likely]]
       return;
+    refuse(p);
+  }
+  [[noreturn, gnu::noinline, gnu::cold]] void refuse(const Point& p) const {
+    const double half = device_.field_mm / 2;
     char msg[240];
     std::snprintf(msg, sizeof msg,
                   "%s: command %zu goes to (%.4f, %.4f) mm, outside the field ±%.3f mm; nothing "
@@ -121,6 +139,8 @@ class Builder {
 
   const DeviceDescription& device_;
   DeviceProgram& out_;
+  // Clamped so that an infinite point is refused even by an unbounded field.
+  const double half_ = std::min(device_.field_mm / 2, std::numeric_limits<double>::max());
 };
 
 }  // namespace

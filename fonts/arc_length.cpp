@@ -2,6 +2,7 @@
 // and periodic, so a 10-point rule on a few subintervals reaches 1e-12 relative quickly.
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "fonts/element.hpp"
 
@@ -33,7 +34,9 @@ double gauss10(double rx, double ry, double a, double b) {
 double adaptive(double rx, double ry, double a, double b, double whole, double tol, int depth) {
   const double m = (a + b) / 2;
   const double left = gauss10(rx, ry, a, m), right = gauss10(rx, ry, m, b);
-  if (depth >= 30 || std::abs(left + right - whole) <= tol) return left + right;
+  // Quarter-turn pieces converge in a few levels; the cap bounds the work (2^20 pieces) for
+  // anything pathological, so no input can stall a caller.
+  if (depth >= 20 || std::abs(left + right - whole) <= tol) return left + right;
   return adaptive(rx, ry, a, m, left, tol / 2, depth + 1) +
          adaptive(rx, ry, m, b, right, tol / 2, depth + 1);
 }
@@ -43,6 +46,20 @@ double adaptive(double rx, double ry, double a, double b, double whole, double t
 double ellipse_arc_length(double rx, double ry, double theta0, double theta1) {
   if (theta1 < theta0) std::swap(theta0, theta1);
   if (theta1 == theta0) return 0.0;
+  if (!std::isfinite(rx) || !std::isfinite(ry) || !std::isfinite(theta0) || !std::isfinite(theta1))
+    return std::numeric_limits<double>::quiet_NaN();
+  // The speed is periodic in θ: whole turns are multiples of the perimeter, and the start is
+  // taken modulo a turn, so a sweep of many turns or a start at 1e20 rad (where adding a quarter
+  // turn no longer changes θ) cannot loop for ever.
+  const double turn = 2 * std::acos(-1.0);
+  const double sweep = theta1 - theta0;
+  if (std::abs(theta0) > turn) theta0 = std::fmod(theta0, turn);
+  if (sweep > turn) {
+    const double turns = std::floor(sweep / turn);
+    return turns * ellipse_arc_length(rx, ry, 0, turn) +
+           ellipse_arc_length(rx, ry, theta0, theta0 + std::min(turn, sweep - turns * turn));
+  }
+  theta1 = theta0 + sweep;
   // Quarter-turn pieces keep each subinterval free of the integrand's kinks in high eccentricity.
   const double rough = (theta1 - theta0) * std::max(rx, ry);
   const double tol = 1e-13 * rough;

@@ -60,7 +60,7 @@ for target in "${targets[@]}"; do
   corpus="$build/fuzz-corpus/$target"
   artifacts="$build/fuzz-artifacts/$target"
   mkdir -p "$corpus" "$artifacts"
-  for seed in ${seeds[$target]}; do
+  for seed in ${seeds[$target]:-}; do
     [ -f "$seed" ] && cp -n "$seed" "$corpus/" || true
   done
   [ "$target" = lmc_reply ] && lmc_seeds "$corpus"

@@ -81,6 +81,19 @@ TEST(Element, EllipseLengthToNineDigits) {
   EXPECT_NEAR(e.length_between(0, 0.5) + e.length_between(0.5, 1), e.length(), 1e-12);
 }
 
+TEST(Element, EllipseLengthOfManyTurnsOrFarAnglesEnds) {
+  // Found by fuzz_glyph_script: a sweep of 1e77 rad, or a start where adding a quarter turn no
+  // longer changes the angle, looped for ever. Whole turns are multiples of the perimeter.
+  constexpr double kPerimeter = 9.688448220547675;  // semi-axes 2 and 1
+  EXPECT_NEAR(ellipse_arc_length(2, 1, 0.3, 0.3 + 1000 * 2 * kPi + kPi), 1000.5 * kPerimeter,
+              1000.5 * kPerimeter * 1e-9);
+  EXPECT_NEAR(ellipse_arc_length(2, 1, 2 * kPi * 7 + 0.25, 2 * kPi * 7 + 1.25), ellipse_arc_length(2, 1, 0.25, 1.25),
+              1e-9);
+  EXPECT_TRUE(std::isfinite(ellipse_arc_length(2, 1, 1e20, 1e20 + 1)));
+  EXPECT_TRUE(std::isfinite(ellipse_arc_length(2, 1, 0, 1e77)));
+  EXPECT_TRUE(std::isnan(ellipse_arc_length(2, 1, 0, INFINITY)));
+}
+
 TEST(Element, ArcBoundsIncludeAxisExtremes) {
   const Element a = Element::arc({0, 0}, 2, -kPi / 4, kPi / 2);  // through angle 0
   const Box b = a.bounds();

@@ -100,6 +100,9 @@ class ScriptParser {
       double v = 0;
       const auto [end, ec] = std::from_chars(first, group.data() + group.size(), v);
       if (ec != std::errc() || !std::isfinite(v)) fail("bad number", group, at);
+      // Glyphs are drawn on a grid about 10 units tall: a coordinate, radius or angle beyond
+      // ±1e6 is a typo, and one near 1e170 overflowed the geometry (found by fuzz_glyph_script).
+      if (std::abs(v) > 1e6) fail("number outside -1000000 to 1000000", group, at);
       out.push_back(v);
       i = static_cast<std::size_t>(end - group.data());
       if (i == group.size()) break;

@@ -92,6 +92,9 @@ TEST(Element, EllipseLengthOfManyTurnsOrFarAnglesEnds) {
   EXPECT_TRUE(std::isfinite(ellipse_arc_length(2, 1, 1e20, 1e20 + 1)));
   EXPECT_TRUE(std::isfinite(ellipse_arc_length(2, 1, 0, 1e77)));
   EXPECT_TRUE(std::isnan(ellipse_arc_length(2, 1, 0, INFINITY)));
+  // A radius whose square overflows: the length of the scaled ellipse, scaled back.
+  EXPECT_NEAR(ellipse_arc_length(2.6, 2e169, 0.349, 4.71) / 2e169, ellipse_arc_length(2.6e-169, 1, 0.349, 4.71),
+              1e-12);
 }
 
 TEST(Element, ArcBoundsIncludeAxisExtremes) {

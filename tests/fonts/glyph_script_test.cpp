@@ -113,6 +113,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadScript{"M1,0 L3,", "3,", "bad number"},
                       BadScript{"M1,0 L3,,4", "3,,4", "bad number"},
                       BadScript{"M1,0 L1.2.3,4", "1.2.3,4", "bad number"},
+                      BadScript{"E4,6,2.6,2000000000,20,270", "4,6,2.6,2000000000,20,270", "outside -1000000 to 1000000"},
                       BadScript{"M1,0 L", "L", "without coordinates"},
                       BadScript{"M L1,0", "M", "without coordinates"},
                       BadScript{"M1,0 L1,0", "1,0", "zero-length"},

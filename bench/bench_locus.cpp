@@ -19,24 +19,24 @@ namespace {
 
 using namespace mark;
 
-std::vector<Command> text_job(double italic_deg) {
+// The 62 characters at 5 mm, centred, optionally slanted.
+Figure text_figure(double italic_deg) {
   LayoutOptions options;
   options.height_mm = 5;
   options.align = Align::center;
   options.italic_deg = italic_deg;
-  const Figure f = layout_text("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789",
-                               builtin_font(), options);
+  return layout_text("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789", builtin_font(),
+                     options);
+}
+
+std::vector<Command> text_job(double italic_deg) {
+  const Figure f = text_figure(italic_deg);
   return plan_figure(f, default_pen(CornerStrategy::blanking, 0.12e-3, 1000, 9600)).commands;
 }
 
 // The text planned with look-ahead on SL10 (the datasheet model), optionally fed forward.
 Plan planned_text_job(double italic_deg, bool feed_forward, bool second_order) {
-  LayoutOptions options;
-  options.height_mm = 5;
-  options.align = Align::center;
-  options.italic_deg = italic_deg;
-  const Figure f = layout_text("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789",
-                               builtin_font(), options);
+  const Figure f = text_figure(italic_deg);
   HeadModel head = head_sl10();
   head.second_order = second_order;
   PenRules r;

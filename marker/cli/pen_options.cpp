@@ -106,31 +106,31 @@ Pen make_pen(const PenArgs& a, const HeadModel& head) {
     pen.jump_speed_mm_s = *a.jump_speed_mm_s;
     if (pen.corner == CornerStrategy::blanking) pen.join_speed_mm_s = pen.jump_speed_mm_s;
   }
-  auto set = [](const std::optional<double>& v, const char*, double& field, double scale) {
+  auto set = [](const std::optional<double>& v, double& field, double scale) {
     if (v) field = *v * scale;
   };
-  set(a.laser_on_delay_us, "--laser-on-delay-us", pen.laser_on_delay_s, 1e-6);
-  set(a.laser_off_delay_us, "--laser-off-delay-us", pen.laser_off_delay_s, 1e-6);
-  set(a.jump_delay_us, "--jump-delay-us", pen.jump_delay_s, 1e-6);
-  set(a.jump_settle_um, "--jump-settle-um", pen.jump_settle_mm, 1e-3);
-  set(a.mark_delay_us, "--mark-delay-us", pen.mark_delay_s, 1e-6);
-  set(a.polygon_delay_us, "--polygon-delay-us", pen.polygon_delay_s, 1e-6);
-  set(a.blank_angle_deg, "--blank-angle-deg", pen.blank_angle_deg, 1);
+  set(a.laser_on_delay_us, pen.laser_on_delay_s, 1e-6);
+  set(a.laser_off_delay_us, pen.laser_off_delay_s, 1e-6);
+  set(a.jump_delay_us, pen.jump_delay_s, 1e-6);
+  set(a.jump_settle_um, pen.jump_settle_mm, 1e-3);
+  set(a.mark_delay_us, pen.mark_delay_s, 1e-6);
+  set(a.polygon_delay_us, pen.polygon_delay_s, 1e-6);
+  set(a.blank_angle_deg, pen.blank_angle_deg, 1);
   if (a.run_in_mm) pen.run_in_mm = *a.run_in_mm;
-  set(a.min_run_in_mm, "--min-run-in", pen.min_run_in_mm, 1);
-  set(a.run_out_mm, "--run-out", pen.run_out_mm, 1);
-  set(a.settle_um, "--settle-um", pen.settle_mm, 1e-3);
-  set(a.join_speed_mm_s, "--join-speed", pen.join_speed_mm_s, 1);
-  set(a.tracking_error_us, "--tracking-error-us", pen.tracking_error_s, 1e-6);
-  set(a.accel_mm_s2, "--accel", pen.accel_mm_s2, 1);
-  set(a.jump_accel_mm_s2, "--jump-accel", pen.jump_accel_mm_s2, 1);
-  set(a.curve_accel_mm_s2, "--curve-accel", pen.curve_accel_mm_s2, 1);
-  set(a.accel_limit_mm_s2, "--accel-limit", pen.accel_limit_mm_s2, 1);
-  set(a.junction_dv_mm_s, "--junction-dv", pen.junction_dv_mm_s, 1);
-  set(a.laser_switch_speed_mm_s, "--laser-switch-speed", pen.laser_switch_speed_mm_s, 1);
-  set(a.min_lit_speed_mm_s, "--min-lit-speed", pen.min_lit_speed_mm_s, 1);
-  set(a.ff_lag_us, "--ff-lag-us", pen.ff_lag_s, 1e-6);
-  set(a.ff_inertia_us2, "--ff-inertia-us2", pen.ff_inertia_s2, 1e-12);
+  set(a.min_run_in_mm, pen.min_run_in_mm, 1);
+  set(a.run_out_mm, pen.run_out_mm, 1);
+  set(a.settle_um, pen.settle_mm, 1e-3);
+  set(a.join_speed_mm_s, pen.join_speed_mm_s, 1);
+  set(a.tracking_error_us, pen.tracking_error_s, 1e-6);
+  set(a.accel_mm_s2, pen.accel_mm_s2, 1);
+  set(a.jump_accel_mm_s2, pen.jump_accel_mm_s2, 1);
+  set(a.curve_accel_mm_s2, pen.curve_accel_mm_s2, 1);
+  set(a.accel_limit_mm_s2, pen.accel_limit_mm_s2, 1);
+  set(a.junction_dv_mm_s, pen.junction_dv_mm_s, 1);
+  set(a.laser_switch_speed_mm_s, pen.laser_switch_speed_mm_s, 1);
+  set(a.min_lit_speed_mm_s, pen.min_lit_speed_mm_s, 1);
+  set(a.ff_lag_us, pen.ff_lag_s, 1e-6);
+  set(a.ff_inertia_us2, pen.ff_inertia_s2, 1e-12);
   return pen;
 }
 

@@ -26,41 +26,53 @@ std::size_t chord_count(const Element& e, double tol_mm) {
   return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(std::abs(sweep) / step)));
 }
 
-// The points at parameters k/n (k = 1 … n) of an arc or ellipse arc, for chords: the angle
-// advances by a fixed rotation instead of a sin/cos per point (two-thirds of the conversion's
-// time went to sincos), and the last point is the element's exact end. The recurrence drifts by
-// about k·1e-16 of the radius: far below the chord tolerance for any n a glyph needs. `start`
-// is the element's start point (the caller has it; a circle's first direction comes from it).
+// The chord points of an arc or ellipse arc at parameters k/n (k = 1 … n): the angle advances by
+// a fixed rotation instead of a sin/cos per point (two-thirds of the conversion's time went to
+// sincos), and the last point is the element's exact end. The recurrence drifts by about
+// k·1e-16 of the radius: far below the chord tolerance for any n a glyph needs. Each curve costs
+// three sincos (start direction, step, end) and an ellipse one more (its rotation); every
+// expression is the one Element::point_at evaluates, so the points are the same to the bit.
 // Points are built coordinate by coordinate, not as Eigen expressions: Eigen stored c and s as
 // two doubles and read them back as one 16-byte vector, a failed store-to-load forward on every
-// chord (a quarter of the conversion's time); the arithmetic, and so every point, is the same.
+// chord (a quarter of the conversion's time).
 template <class F>
-void for_chord_points(const Element& e, const Point& start, std::size_t n, F&& emit) {
-  const auto rotate_from = [&](double c, double s, double step, auto&& place) {
+void for_chord_points(const Element& e, std::size_t n, F&& emit) {
+  const auto rotate = [&](double c, double s, double step, auto&& place) {
     const double dc = std::cos(step), ds = std::sin(step);
     for (std::size_t k = 1; k < n; ++k) {
       const double c1 = c * dc - s * ds;
       s = s * dc + c * ds;
       c = c1;
-      emit(place(c, s));
+      place(c, s);
     }
-    emit(e.end());
   };
-  std::visit(Overloaded{[&](const Line&) { emit(e.end()); },
+  std::visit(Overloaded{[&](const Line& l) {
+                          const Point p = l.start + 1.0 * (l.end - l.start);  // point_at(1)
+                          emit(p.x(), p.y());
+                        },
                         [&](const CircularArc& a) {
-                          const Point u = (start - a.center) / a.radius;
-                          rotate_from(u.x(), u.y(), a.sweep / double(n), [&](double c, double s) {
-                            return Point(a.center.x() + a.radius * c, a.center.y() + a.radius * s);
-                          });
+                          const auto on_circle = [&](double c, double s) {
+                            emit(a.center.x() + a.radius * c, a.center.y() + a.radius * s);
+                          };
+                          // The start direction from the start point, as the element has it.
+                          const double c0 = std::cos(a.start_angle), s0 = std::sin(a.start_angle);
+                          const double sx = a.center.x() + a.radius * c0;
+                          const double sy = a.center.y() + a.radius * s0;
+                          rotate((sx - a.center.x()) / a.radius, (sy - a.center.y()) / a.radius,
+                                 a.sweep / double(n), on_circle);
+                          const double th = a.start_angle + 1.0 * a.sweep;
+                          on_circle(std::cos(th), std::sin(th));
                         },
                         [&](const EllipticalArc& el) {
                           const double rc = std::cos(el.rotation), rs = std::sin(el.rotation);
-                          rotate_from(std::cos(el.start_param), std::sin(el.start_param),
-                                      el.sweep / double(n), [&](double c, double s) {
+                          const auto on_ellipse = [&](double c, double s) {
                             const double x = el.rx * c, y = el.ry * s;
-                            return Point(el.center.x() + (rc * x - rs * y),
-                                         el.center.y() + (rs * x + rc * y));
-                          });
+                            emit(el.center.x() + (rc * x - rs * y), el.center.y() + (rs * x + rc * y));
+                          };
+                          rotate(std::cos(el.start_param), std::sin(el.start_param),
+                                 el.sweep / double(n), on_ellipse);
+                          const double th = el.start_param + 1.0 * el.sweep;
+                          on_ellipse(std::cos(th), std::sin(th));
                         }},
              e.geometry());
 }
@@ -69,72 +81,56 @@ class Builder {
  public:
   Builder(const DeviceDescription& device, DeviceProgram& out) : device_(device), out_(out) {}
 
-  void jump(const Point& p, double speed) { push(DeviceCommand::jump_to(p.x(), p.y(), speed), false, 0); }
+  void jump(double x, double y, double speed) {
+    check(x, y);
+    out_.commands.push_back(DeviceCommand::jump_to(x, y, speed));
+  }
 
-  void mark(const Element& e, double speed) {
-    if (e.kind() == ElementKind::line) {
-      const Point p = e.end();
-      push(DeviceCommand::mark_to(p.x(), p.y(), speed), true, e.length());
-      return;
-    }
+  // `n`: the element's chord count (chord_count), 1 for a line.
+  void mark(const Element& e, double speed, std::size_t n) {
     if (e.kind() == ElementKind::arc && device_.arcs) {
       const auto& a = std::get<CircularArc>(e.geometry());
-      check(e.point_at(0.5));  // an arc's bulge can leave the field even when its ends do not
+      const Point mid = e.point_at(0.5);  // an arc's bulge can leave the field when its ends do not
+      check(mid.x(), mid.y());
       const Point p = e.end();
-      push(DeviceCommand::arc_to(p.x(), p.y(), a.center.x(), a.center.y(), a.sweep, speed), true,
-           e.length());
+      check(p.x(), p.y());
+      out_.commands.push_back(
+          DeviceCommand::arc_to(p.x(), p.y(), a.center.x(), a.center.y(), a.sweep, speed));
       return;
     }
-    const std::size_t n = chord_count(e, device_.chord_tolerance_mm);
-    Point prev = e.start();
-    if (const auto* a = std::get_if<CircularArc>(&e.geometry())) {
-      // Equal steps on a circle give equal chords, 2R·sin(|sweep|/2n): one sine per arc instead
-      // of a square root per chord (ink only; the points are the same either way).
-      const double chord = 2 * a->radius * std::sin(std::abs(a->sweep) / (2 * double(n)));
-      for_chord_points(e, prev, n, [&](const Point& p) {
-        push(DeviceCommand::mark_to(p.x(), p.y(), speed), true, chord);
-      });
-    } else {
-      for_chord_points(e, prev, n, [&](const Point& p) {
-        push(DeviceCommand::mark_to(p.x(), p.y(), speed), true, (p - prev).norm());
-        prev = p;
-      });
-    }
-    out_.chords += n;
+    for_chord_points(e, n, [&](double x, double y) {
+      check(x, y);
+      out_.commands.push_back(DeviceCommand::mark_to(x, y, speed));
+    });
+    if (e.kind() != ElementKind::line) out_.chords += n;
   }
 
-  void laser_off_line(const Element& e, double speed) {
-    // Blanking lines are straight; anything else unlit is flattened like a lit curve.
-    const std::size_t n = e.kind() == ElementKind::line ? 1 : chord_count(e, device_.chord_tolerance_mm);
-    for_chord_points(e, e.start(), n, [&](const Point& p) { jump(p, speed); });
+  // Blanking lines are straight; anything else unlit is flattened like a lit curve.
+  void laser_off_line(const Element& e, double speed, std::size_t n) {
+    for_chord_points(e, n, [&](double x, double y) { jump(x, y, speed); });
   }
 
-  void dwell(double seconds, bool laser) { push(DeviceCommand::dwell_for(seconds, laser), false, 0); }
-  void pen(std::uint16_t index) { push(DeviceCommand::select_pen(index), false, 0); }
+  void dwell(double seconds, bool laser) {
+    out_.commands.push_back(DeviceCommand::dwell_for(seconds, laser));
+  }
+  void pen(std::uint16_t index) { out_.commands.push_back(DeviceCommand::select_pen(index)); }
 
  private:
   // The test runs for every point, inline; the refusal is out of line so the hot path stays
   // small (|v| ≤ half is false for NaN; infinities are above half).
-  void check(const Point& p) const {
-    if (std::abs(p.x()) <= half_ && std::abs(p.y()) <= half_) [[likely]]
+  void check(double x, double y) const {
+    if (std::abs(x) <= half_ && std::abs(y) <= half_) [[likely]]
       return;
-    refuse(p);
+    refuse(x, y);
   }
-  [[noreturn, gnu::noinline, gnu::cold]] void refuse(const Point& p) const {
+  [[noreturn, gnu::noinline, gnu::cold]] void refuse(double x, double y) const {
     const double half = device_.field_mm / 2;
     char msg[240];
     std::snprintf(msg, sizeof msg,
                   "%s: command %zu goes to (%.4f, %.4f) mm, outside the field ±%.3f mm; nothing "
                   "was sent",
-                  device_.name.c_str(), out_.commands.size(), p.x(), p.y(), half);
+                  device_.name.c_str(), out_.commands.size(), x, y, half);
     throw DeviceFaultError({FaultCategory::out_of_field, msg, out_.commands.size()});
-  }
-  void push(const DeviceCommand& c, bool lit, double length) {
-    if (c.op == DeviceOp::jump || c.op == DeviceOp::mark || c.op == DeviceOp::arc)
-      check(Point(c.x_mm, c.y_mm));
-    out_.commands.push_back(c);
-    if (lit) out_.lit_length_mm += length;
-    out_.ink_after.push_back(out_.lit_length_mm);
   }
 
   const DeviceDescription& device_;
@@ -179,31 +175,36 @@ DeviceProgram device_program(const Plan& plan, const LaserSettings& laser,
   DeviceProgram out;
   out.pen = device_pen(plan.pen, laser, DeviceLevel::commands);
   // Room for every chord up front: a reallocation of tens of thousands of commands costs more
-  // than this count.
+  // than this count. The curves' chord counts are kept for the pass below (a square root and a
+  // division each).
+  const auto curve = [](const Command& c) {
+    return c.kind == CommandKind::arc || c.kind == CommandKind::ellipse;
+  };
+  std::vector<std::size_t> chords;
   std::size_t expected = plan.commands.size() + 1;
   for (const Command& c : plan.commands)
-    if (c.kind == CommandKind::arc || c.kind == CommandKind::ellipse)
-      expected += chord_count(c.path, device.chord_tolerance_mm) - 1;
+    if (curve(c)) expected += chords.emplace_back(chord_count(c.path, device.chord_tolerance_mm)) - 1;
   out.commands.reserve(expected);
-  out.ink_after.reserve(expected + 1);
   Builder b(device, out);
   b.pen(0);
+  std::size_t next_curve = 0;
   for (const Command& c : plan.commands) {
+    const std::size_t n = curve(c) ? chords[next_curve++] : 1;
     switch (c.role) {
       case CommandRole::stroke:
         if (c.kind == CommandKind::dwell) {
           b.dwell(c.dwell_ticks * plan.pen.tick_s, c.laser());
         } else {
-          b.mark(c.path, c.speed_mm_s);
+          b.mark(c.path, c.speed_mm_s, n);
         }
         break;
       case CommandRole::jump:
-        b.jump(c.end(), 0);
+        b.laser_off_line(c.path, 0, 1);
         break;
       case CommandRole::run_in:
       case CommandRole::run_out:
       case CommandRole::blank_join:
-        b.laser_off_line(c.path, c.speed_mm_s);
+        b.laser_off_line(c.path, c.speed_mm_s, n);
         break;
       case CommandRole::delay:
         break;  // jump, mark and polygon delays are the board's job (DevicePen)
@@ -212,11 +213,28 @@ DeviceProgram device_program(const Plan& plan, const LaserSettings& laser,
   return out;
 }
 
+double lit_length_mm(const DeviceProgram& program, std::uint64_t done) {
+  // Every command starts where the previous one ended, the first at the field centre.
+  double lit = 0, x = 0, y = 0;
+  const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(done, program.commands.size()));
+  for (std::size_t i = 0; i < n; ++i) {
+    const DeviceCommand& c = program.commands[i];
+    switch (c.op) {
+      case DeviceOp::mark: lit += std::hypot(c.x_mm - x, c.y_mm - y); break;
+      case DeviceOp::arc: lit += std::abs(c.sweep_rad) * std::hypot(x - c.cx_mm, y - c.cy_mm); break;
+      case DeviceOp::jump:
+      case DeviceOp::dwell:
+      case DeviceOp::pen: break;
+    }
+    if (c.op == DeviceOp::jump || c.op == DeviceOp::mark || c.op == DeviceOp::arc) x = c.x_mm, y = c.y_mm;
+  }
+  return lit;
+}
+
 double ink_fraction(const DeviceProgram& program, std::uint64_t done) {
-  if (program.lit_length_mm <= 0) return done >= program.commands.size() ? 1.0 : 0.0;
-  const std::size_t i = static_cast<std::size_t>(
-      std::min<std::uint64_t>(done, program.ink_after.size() - 1));
-  return program.ink_after[i] / program.lit_length_mm;
+  const double all = lit_length_mm(program);
+  if (all <= 0) return done >= program.commands.size() ? 1.0 : 0.0;
+  return lit_length_mm(program, done) / all;
 }
 
 }  // namespace mark

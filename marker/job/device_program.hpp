@@ -11,6 +11,7 @@
 // stroke. Lit arcs and ellipse arcs become chords within the device's chord tolerance unless the
 // device takes circular arcs.
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "driver/device.hpp"
@@ -22,10 +23,7 @@ namespace mark {
 struct DeviceProgram {
   std::vector<DeviceCommand> commands;
   DevicePen pen;
-  double lit_length_mm = 0;   // ink: the length of every lit command
   std::size_t chords = 0;     // lit arcs flattened into this many straight marks
-  // ink_after[k]: lit length of the first k commands (k = 0 … commands.size()).
-  std::vector<double> ink_after{0.0};
 };
 
 // The plan a command-level device should receive for this figure and pen: the same strokes and
@@ -40,6 +38,12 @@ DevicePen device_pen(const Pen& pen, const LaserSettings& laser, DeviceLevel lev
 // field before anything is returned: throws DeviceFaultError (out_of_field) naming the point.
 DeviceProgram device_program(const Plan& plan, const LaserSettings& laser,
                              const DeviceDescription& device);
+
+// Ink: the lit length of the program's first `done` commands (all by default). Walked on demand
+// (a job asks once, when it stopped early) rather than summed per command while converting:
+// that cost a square root per ellipse chord and a second vector as long as the program.
+double lit_length_mm(const DeviceProgram& program,
+                     std::uint64_t done = std::numeric_limits<std::uint64_t>::max());
 
 // Fraction of the program's ink (lit length) in its first `done` commands.
 double ink_fraction(const DeviceProgram& program, std::uint64_t done);

@@ -57,7 +57,7 @@ TEST(DeviceProgram, ArcsBecomeChordsWithinTheTolerance) {
       // Not wastefully many: within a factor 1.5 of the fewest chords that meet the tolerance.
       const double fewest = std::ceil(1.5 * std::numbers::pi / (2 * std::acos(1 - std::min(tol / r, 1.0))));
       EXPECT_LE(static_cast<double>(p.chords), 1.5 * fewest + 1) << "r " << r << " tol " << tol;
-      EXPECT_NEAR(p.lit_length_mm, arc.length(), arc.length() * 1e-3 + 2 * tol);
+      EXPECT_NEAR(lit_length_mm(p), arc.length(), arc.length() * 1e-3 + 2 * tol);
     }
   }
 }
@@ -163,6 +163,31 @@ JobSpec board_job() {
   spec.pen = pen_for_head(spec.head, CornerStrategy::blanking, 1000);
   spec.laser = {80, 30, 0};
   return spec;
+}
+
+// Ink is walked on demand from the commands: it starts at 0, ends at 1, never falls, grows
+// only over lit commands, and the program's lit length is the plan's stroke length to within
+// the chords' shortening.
+TEST(DeviceProgram, InkGrowsOverLitCommandsOnly) {
+  const JobSpec spec = board_job();
+  const CompiledJob job = compile_job(spec, DeviceLevel::commands);
+  const DeviceProgram p = device_program(job.plan, spec.laser, board());
+  double strokes = 0;
+  for (const Command& c : job.plan.commands)
+    if (c.role == CommandRole::stroke) strokes += c.length;
+  EXPECT_NEAR(lit_length_mm(p), strokes, strokes * 1e-3);
+  EXPECT_EQ(ink_fraction(p, 0), 0.0);
+  EXPECT_DOUBLE_EQ(ink_fraction(p, p.commands.size()), 1.0);
+  double before = 0;
+  for (std::size_t k = 1; k <= p.commands.size(); ++k) {
+    const double f = ink_fraction(p, k);
+    if (p.commands[k - 1].op == DeviceOp::mark) {
+      EXPECT_GE(f, before) << "command " << k - 1;
+    } else {
+      EXPECT_EQ(f, before) << "command " << k - 1 << " is not lit";
+    }
+    before = f;
+  }
 }
 
 TEST(DeviceProgram, JobRunsOnACommandDevice) {

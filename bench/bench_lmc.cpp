@@ -63,7 +63,7 @@ lmc::EncoderFigures encode_once(const CompiledJob& job, const JobSpec& spec,
   lmc::JobEncoder enc(units, [&](const lmc::ListPacket& p, const lmc::PacketInfo&) { on_packet(p); });
   enc.start_list(0.008, 1);
   enc.apply_pen(pen);
-  for (std::size_t i = 0; i < program.commands.size(); ++i) enc.add(program.commands[i], i);
+  enc.add(program.commands, 0, std::span(&pen, 1));
   enc.finish(program.commands.size());
   device_commands = program.commands.size();
   return enc.figures();
@@ -108,7 +108,7 @@ void encode_program(benchmark::State& state, int rows) {
     });
     enc.start_list(0.008, 1);
     enc.apply_pen(pen);
-    for (std::size_t i = 0; i < program.commands.size(); ++i) enc.add(program.commands[i], i);
+    enc.add(program.commands, 0, std::span(&pen, 1));
     enc.finish(program.commands.size());
     list_commands = enc.figures().list_commands;
   }

@@ -63,6 +63,7 @@ std::string_view command_name(std::uint16_t opcode) {
 FieldUnits::FieldUnits(double field_mm, AxisMap axes, PolygonDelayUnit polygon)
     : field_mm_(field_mm),
       per_mm_(65535.0 / field_mm),
+      speed_factor_(per_mm_ / 1000.0),
       edge_(field_mm / 2 * (1 + 1e-12)),
       axes_(axes),
       polygon_(polygon) {

@@ -277,7 +277,7 @@ class FieldUnits {
     // |x| ≤ h, written so that a NaN fails too.
     return std::abs(x_mm) <= edge_ && std::abs(y_mm) <= edge_;
   }
-  double speed_factor() const { return per_mm_ / 1000.0; }  // mm/s → units per ms
+  double speed_factor() const { return speed_factor_; }  // mm/s → units per ms
 
  private:
   // Truncation, as the reference drivers (see the top of this file). In the field u ≥ 0.4999
@@ -291,6 +291,7 @@ class FieldUnits {
 
   double field_mm_;
   double per_mm_;
+  double speed_factor_;  // per_mm_ / 1000, kept: the list encoder needs it for every speed word
   double edge_;  // half the field, with a 1e-12 relative tolerance
   AxisMap axes_;
   PolygonDelayUnit polygon_;
@@ -397,7 +398,15 @@ class ListPacket {
   void push(std::uint16_t op, std::uint16_t p1, std::uint16_t p2 = 0, std::uint16_t p3 = 0,
             std::uint16_t p4 = 0, std::uint16_t p5 = 0) {
     std::uint16_t* w = words_.data() + 6 * used_++;
-    w[0] = wire(op), w[1] = wire(p1), w[2] = wire(p2), w[3] = wire(p3), w[4] = wire(p4), w[5] = wire(p5);
+    if constexpr (std::endian::native == std::endian::little) {
+      // Two stores instead of six: the list encoder writes a word per command.
+      const std::uint64_t head = op | std::uint64_t(p1) << 16 | std::uint64_t(p2) << 32 | std::uint64_t(p3) << 48;
+      const std::uint32_t tail = p4 | std::uint32_t(p5) << 16;
+      std::memcpy(w, &head, sizeof head);
+      std::memcpy(w + 4, &tail, sizeof tail);
+    } else {
+      w[0] = wire(op), w[1] = wire(p1), w[2] = wire(p2), w[3] = wire(p3), w[4] = wire(p4), w[5] = wire(p5);
+    }
   }
   std::span<const std::uint8_t, kPacketBytes> bytes() const {
     return std::span<const std::uint8_t, kPacketBytes>(

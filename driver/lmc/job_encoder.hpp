@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "driver/device.hpp"
@@ -82,8 +83,13 @@ class JobEncoder {
   void start_list(double open_mo_delay_s, std::uint16_t port_bits);
   void apply_pen(const BoardPen& pen);
   // Appends one device command (already checked against the field by the caller). `index` is
-  // its index in the job, for PacketInfo::commands_complete.
+  // its index in the job, for PacketInfo::commands_complete. A pen command puts nothing on the
+  // wire: the caller resolves its index and calls apply_pen.
   void add(const DeviceCommand& c, std::uint64_t index);
+  // Appends device commands first_index, first_index + 1, …: the same words as add() one by
+  // one, with pen commands resolved in `pens` (EncodeError for an index beyond it).
+  void add(std::span<const DeviceCommand> cs, std::uint64_t first_index,
+           std::span<const BoardPen> pens);
   // The pen's mark delay if a mark run is open, EndOfList, and the last packet (padded).
   void finish(std::uint64_t commands_in_job);
 
@@ -99,12 +105,6 @@ class JobEncoder {
     packet_.push(c);
     packet_estimate_s_ += estimated_s;
   }
-  // A move, straight into the packet (the hot path).
-  void push_move(Op op, std::array<std::uint16_t, 2> to, std::uint16_t distance, double estimated_s) {
-    if (packet_.full()) flush_full();
-    packet_.push(static_cast<std::uint16_t>(op), to[0], to[1], 0, distance);
-    packet_estimate_s_ += estimated_s;
-  }
   // Hands the packet to the sink and counts it once the sink took it.
   void emit_packet(const PacketInfo& info);
   void flush_full();
@@ -115,9 +115,12 @@ class JobEncoder {
     if (jump_delay_[0] != d[0] || jump_delay_[1] != d[1]) send_jump_delay(d);
   }
   void send_jump_speed(std::uint16_t w);
+  void send_mark_speed(std::uint16_t w);
   void send_jump_delay(std::array<std::uint16_t, 2> d);
-  void move(Op op, double x_mm, double y_mm, std::uint16_t speed_word);
   void end_run();
+  // Encodes the leading marks and jumps of `cs` (up to the first pen, dwell or arc, or a move
+  // at the pen's speed with no pen applied); returns how many.
+  std::size_t add_moves(std::span<const DeviceCommand> cs, std::uint64_t first_index);
 
   FieldUnits units_;
   PacketSink sink_;

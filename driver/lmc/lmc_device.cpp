@@ -203,11 +203,7 @@ void LmcDevice::submit(std::span<const DeviceCommand> commands) {
     if (commands_ == 0 && !commands.empty() && commands.front().op != DeviceOp::jump &&
         encoder_.position() != std::array<std::uint16_t, 2>{0x8000, 0x8000})
       encoder_.add(DeviceCommand::jump_to(0, 0), 0);
-    for (std::size_t i = 0; i < commands.size(); ++i) {
-      const DeviceCommand& c = commands[i];
-      encoder_.add(c, commands_ + i);
-      if (c.op == DeviceOp::pen) encoder_.apply_pen(pens_[c.pen]);
-    }
+    encoder_.add(commands, commands_, pens_);
     commands_ += commands.size();
     const auto p = units_.field_point(encoder_.position()[0], encoder_.position()[1]);
     std::lock_guard lock(state_mutex_);

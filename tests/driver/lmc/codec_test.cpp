@@ -284,6 +284,81 @@ TEST(LmcEncoder, PacketsCarryWhatTheyComplete) {
   EXPECT_EQ(enc.figures().list_commands, 612u);
 }
 
+// The span form (what LmcDevice::submit uses) puts out the same packets, with the same
+// completion counts and estimates, as the commands added one by one: travel, blanking lines,
+// marks at changing speeds, a pen switch mid-run, dwells, dropped moves, packet boundaries.
+TEST(LmcEncoder, SpanGivesTheSameWordsAsOneByOne) {
+  const FieldUnits units(110);
+  DevicePen p0 = test::golden_pen();
+  p0.jump_delay_s = 200e-6;
+  DevicePen p1 = p0;
+  p1.mark_speed_mm_s = 900;
+  p1.laser.power_pct = 40;
+  const std::vector<BoardPen> pens = {encode_pen(p0, 0, units, LaserSource::fiber),
+                                      encode_pen(p1, 1, units, LaserSource::fiber)};
+  std::vector<DeviceCommand> cs = {DeviceCommand::select_pen(0), DeviceCommand::jump_to(1, 1)};
+  for (int i = 0; i < 700; ++i) {
+    const double x = 1 + 0.01 * i;
+    switch (i % 7) {
+      case 0: cs.push_back(DeviceCommand::jump_to(x, 2, 1000 + i)); break;  // a run-in
+      case 1: cs.push_back(DeviceCommand::mark_to(x, 2.5)); break;
+      case 2: cs.push_back(DeviceCommand::mark_to(x, 2.5, 1500)); break;
+      case 3: cs.push_back(DeviceCommand::mark_to(x, 2.5, 1500)); break;  // nowhere to go
+      case 4: cs.push_back(DeviceCommand::jump_to(x, 3)); break;            // travel
+      case 5: cs.push_back(i % 2 ? DeviceCommand::dwell_for(1e-4, true) : DeviceCommand::select_pen(1)); break;
+      case 6: cs.push_back(i % 3 ? DeviceCommand::mark_to(x, 1) : DeviceCommand::select_pen(0)); break;
+    }
+  }
+  struct Out {
+    std::vector<std::vector<std::uint8_t>> packets;
+    std::vector<PacketInfo> infos;
+  };
+  const auto encode = [&](bool span, Out& out) {
+    JobEncoder enc(units, [&](const ListPacket& p, const PacketInfo& i) {
+      out.packets.emplace_back(p.bytes().begin(), p.bytes().end());
+      out.infos.push_back(i);
+    });
+    enc.start_list(0.008, 1);
+    enc.apply_pen(pens[0]);
+    if (span) {
+      enc.add(cs, 0, pens);
+    } else {
+      for (std::size_t i = 0; i < cs.size(); ++i) {
+        enc.add(cs[i], i);
+        if (cs[i].op == DeviceOp::pen) enc.apply_pen(pens[cs[i].pen]);
+      }
+    }
+    enc.finish(cs.size());
+    return enc.figures();
+  };
+  Out one, all;
+  const EncoderFigures f1 = encode(false, one), f2 = encode(true, all);
+  ASSERT_GE(one.packets.size(), 4u);
+  ASSERT_EQ(one.packets.size(), all.packets.size());
+  for (std::size_t k = 0; k < one.packets.size(); ++k) {
+    EXPECT_EQ(one.packets[k], all.packets[k]) << "packet " << k;
+    EXPECT_EQ(one.infos[k].commands_complete, all.infos[k].commands_complete) << "packet " << k;
+    EXPECT_DOUBLE_EQ(one.infos[k].estimated_s, all.infos[k].estimated_s) << "packet " << k;
+  }
+  EXPECT_EQ(f1.list_commands, f2.list_commands);
+  EXPECT_EQ(f1.moves, f2.moves);
+  EXPECT_EQ(f1.parameter_commands, f2.parameter_commands);
+  EXPECT_GT(f1.parameter_commands, 200u);  // the speeds really changed along the way
+
+  // A pen the span does not hold is refused, naming the command.
+  JobEncoder enc(units, [](const ListPacket&, const PacketInfo&) {});
+  enc.start_list(0, 1);
+  const std::vector<DeviceCommand> bad = {DeviceCommand::select_pen(0), DeviceCommand::select_pen(2)};
+  EXPECT_NE(error_of([&] { enc.add(bad, 40, pens); }).find("command 41 selects pen 2; the job has 2"),
+            std::string::npos);
+  // A move at the pen's speed before any pen: refused, not a crash.
+  JobEncoder bare(units, [](const ListPacket&, const PacketInfo&) {});
+  bare.start_list(0, 1);
+  EXPECT_NE(error_of([&] { bare.add(DeviceCommand::mark_to(1, 1), 7); })
+                .find("command 7 uses the pen's speed before any pen was applied"),
+            std::string::npos);
+}
+
 TEST(LmcEncoder, PenRefusalsNameThePenAndTheValue) {
   const FieldUnits u(110);
   DevicePen p = test::golden_pen();

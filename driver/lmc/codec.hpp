@@ -398,15 +398,7 @@ class ListPacket {
   void push(std::uint16_t op, std::uint16_t p1, std::uint16_t p2 = 0, std::uint16_t p3 = 0,
             std::uint16_t p4 = 0, std::uint16_t p5 = 0) {
     std::uint16_t* w = words_.data() + 6 * used_++;
-    if constexpr (std::endian::native == std::endian::little) {
-      // Two stores instead of six: the list encoder writes a word per command.
-      const std::uint64_t head = op | std::uint64_t(p1) << 16 | std::uint64_t(p2) << 32 | std::uint64_t(p3) << 48;
-      const std::uint32_t tail = p4 | std::uint32_t(p5) << 16;
-      std::memcpy(w, &head, sizeof head);
-      std::memcpy(w + 4, &tail, sizeof tail);
-    } else {
-      w[0] = wire(op), w[1] = wire(p1), w[2] = wire(p2), w[3] = wire(p3), w[4] = wire(p4), w[5] = wire(p5);
-    }
+    w[0] = wire(op), w[1] = wire(p1), w[2] = wire(p2), w[3] = wire(p3), w[4] = wire(p4), w[5] = wire(p5);
   }
   std::span<const std::uint8_t, kPacketBytes> bytes() const {
     return std::span<const std::uint8_t, kPacketBytes>(

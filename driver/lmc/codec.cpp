@@ -63,6 +63,8 @@ std::string_view command_name(std::uint16_t opcode) {
 FieldUnits::FieldUnits(double field_mm, AxisMap axes, PolygonDelayUnit polygon)
     : field_mm_(field_mm),
       per_mm_(65535.0 / field_mm),
+      scale_x_(axes.flip_x ? -per_mm_ : per_mm_),
+      scale_y_(axes.flip_y ? -per_mm_ : per_mm_),
       speed_factor_(per_mm_ / 1000.0),
       edge_(field_mm / 2 * (1 + 1e-12)),
       axes_(axes),
@@ -261,13 +263,12 @@ std::array<std::uint8_t, kCommandBytes> bytes(const Word& c) {
   return b;
 }
 
-void ListPacket::clear() {
-  for (std::size_t i = 0; i < kCommandsPerPacket; ++i) {
+void ListPacket::pad() const {
+  for (std::size_t i = used_; i < kCommandsPerPacket; ++i) {
     std::uint16_t* w = words_.data() + 6 * i;
     w[0] = wire(static_cast<std::uint16_t>(Op::EndOfList));
     w[1] = w[2] = w[3] = w[4] = w[5] = 0;
   }
-  used_ = 0;
 }
 
 std::string describe(const Word& c, const FieldUnits& u) {

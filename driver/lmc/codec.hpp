@@ -266,8 +266,8 @@ class FieldUnits {
   // encoder calls it for every move.
   std::array<std::uint16_t, 2> point(double x_mm, double y_mm) const {
     if (!in_field(x_mm, y_mm)) refuse_point(x_mm, y_mm);
-    double a = axes_.flip_x ? -x_mm : x_mm;
-    double b = axes_.flip_y ? -y_mm : y_mm;
+    // The mirroring is in the signs of the scales: (−x)·k and x·(−k) are the same double.
+    double a = x_mm * scale_x_, b = y_mm * scale_y_;
     if (axes_.swap_xy) std::swap(a, b);
     return {unit(a), unit(b)};
   }
@@ -280,17 +280,19 @@ class FieldUnits {
   double speed_factor() const { return speed_factor_; }  // mm/s → units per ms
 
  private:
-  // Truncation, as the reference drivers (see the top of this file). In the field u ≥ 0.4999
+  // A coordinate already in units from the centre → its word. Truncation, as the reference
+  // drivers (see the top of this file). In the field u ≥ 0.4999
   // (−half field maps to 0.5), so truncating is flooring; the min only absorbs in_field's 1e-12
   // tolerance at the +edge.
-  std::uint16_t unit(double v) const {
-    const double u = 32768.0 + v * per_mm_;
+  std::uint16_t unit(double scaled) const {
+    const double u = 32768.0 + scaled;
     return static_cast<std::uint16_t>(u < 65535.0 ? u : 65535.0);
   }
   [[noreturn]] void refuse_point(double x_mm, double y_mm) const;
 
   double field_mm_;
   double per_mm_;
+  double scale_x_, scale_y_;  // ±per_mm_: the field's x and y in units, mirrored where flipped
   double speed_factor_;  // per_mm_ / 1000, kept: the list encoder needs it for every speed word
   double edge_;  // half the field, with a 1e-12 relative tolerance
   AxisMap axes_;
@@ -389,8 +391,11 @@ std::array<double, 5> decode_params(const Word& c, const CommandSpec& spec, cons
 // after each one); bytes() views the same memory as the 3072 bytes that go on the wire.
 class ListPacket {
  public:
-  ListPacket() { clear(); }
-  void clear();
+  ListPacket() = default;
+  // Empties the packet. The words are not rewritten here: a packet that fills up overwrites
+  // all 256, and bytes() pads what a short one leaves (re-padding every packet was 2 % of the
+  // list encoder's time).
+  void clear() { used_ = 0; }
   bool full() const { return used_ == kCommandsPerPacket; }
   bool empty() const { return used_ == 0; }
   std::size_t used() const { return used_; }
@@ -401,6 +406,7 @@ class ListPacket {
     w[0] = wire(op), w[1] = wire(p1), w[2] = wire(p2), w[3] = wire(p3), w[4] = wire(p4), w[5] = wire(p5);
   }
   std::span<const std::uint8_t, kPacketBytes> bytes() const {
+    if (used_ < kCommandsPerPacket) pad();
     return std::span<const std::uint8_t, kPacketBytes>(
         reinterpret_cast<const std::uint8_t*>(words_.data()), kPacketBytes);
   }
@@ -410,7 +416,10 @@ class ListPacket {
     if constexpr (std::endian::native == std::endian::little) return v;
     return static_cast<std::uint16_t>(v << 8 | v >> 8);
   }
-  std::array<std::uint16_t, kPacketBytes / 2> words_;
+  // The slots from used_ on as EndOfList. Const: it only makes the words beyond used_ what
+  // they mean; writes the same values every time.
+  void pad() const;
+  mutable std::array<std::uint16_t, kPacketBytes / 2> words_{};
   std::size_t used_ = 0;
 };
 static_assert(sizeof(std::array<std::uint16_t, kPacketBytes / 2>) == kPacketBytes);

@@ -186,6 +186,28 @@ TEST(LmcCodec, WordsAndPackets) {
   EXPECT_TRUE(p.full());
   p.clear();
   EXPECT_EQ(load(p.bytes().data()), word(Op::EndOfList));
+  // Refilled after a full packet: the words it does not use are padding again, not what the
+  // full packet held there (clear() leaves them; bytes() pads).
+  for (std::size_t i = 0; i < kCommandsPerPacket; ++i) p.push(w);
+  p.clear();
+  p.push(word(Op::MarkTo, 1, 2, 0, 3));
+  EXPECT_EQ(load(p.bytes().data()), word(Op::MarkTo, 1, 2, 0, 3));
+  for (std::size_t i = 1; i < kCommandsPerPacket; ++i)
+    EXPECT_EQ(load(p.bytes().data() + 12 * i), word(Op::EndOfList)) << i;
+}
+
+// Mirrored and swapped axes: the words are the unmirrored ones reflected about 0x8000 and
+// exchanged (the mirroring lives in the scales' signs).
+TEST(LmcCodec, AxisMapMirrorsAndSwapsTheWords) {
+  const FieldUnits plain(110);
+  const auto p = plain.point(12.5, -3);
+  const auto mirrored = [](std::uint16_t w) { return std::uint16_t(0x10000 - w); };
+  EXPECT_EQ(FieldUnits(110, {false, true, false}).point(12.5, -3), (std::array{plain.point(-12.5, -3)[0], p[1]}));
+  EXPECT_EQ(FieldUnits(110, {false, false, true}).point(12.5, -3), (std::array{p[0], plain.point(12.5, 3)[1]}));
+  EXPECT_EQ(FieldUnits(110, {true, false, false}).point(12.5, -3), (std::array{p[1], p[0]}));
+  EXPECT_EQ(FieldUnits(110, {true, true, true}).point(12.5, -3), (std::array{plain.point(12.5, 3)[1], plain.point(-12.5, -3)[0]}));
+  // x·(−k) is (−x)·k to the bit, so a mirrored word is 0x10000 − w up to the truncation's side.
+  EXPECT_NEAR(FieldUnits(110, {false, true, false}).point(12.5, -3)[0], mirrored(p[0]), 1);
 }
 
 TEST(LmcCodec, Replies) {

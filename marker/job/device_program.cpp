@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
+#include <span>
 #include <variant>
 
 #include "fonts/error.hpp"
@@ -76,6 +78,12 @@ void for_chord_points(const Element& e, std::size_t n, F&& emit) {
                         }},
              e.geometry());
 }
+
+// The larger of two reaches, NaN if either is (std::max drops a NaN in its second argument).
+double worst(double a, double b) { return a != a || a > b ? a : b; }
+
+// The commands that become chords (their chord counts are kept in ProgramCount).
+bool is_curve(const Command& c) { return c.kind == CommandKind::arc || c.kind == CommandKind::ellipse; }
 
 class Builder {
  public:
@@ -170,26 +178,52 @@ DevicePen device_pen(const Pen& pen, const LaserSettings& laser, DeviceLevel lev
   return d;
 }
 
-DeviceProgram device_program(const Plan& plan, const LaserSettings& laser,
-                             const DeviceDescription& device) {
-  DeviceProgram out;
-  out.pen = device_pen(plan.pen, laser, DeviceLevel::commands);
-  // Room for every chord up front: a reallocation of tens of thousands of commands costs more
-  // than this count. The curves' chord counts are kept for the pass below (a square root and a
-  // division each).
-  const auto curve = [](const Command& c) {
-    return c.kind == CommandKind::arc || c.kind == CommandKind::ellipse;
-  };
-  std::vector<std::size_t> chords;
-  std::size_t expected = plan.commands.size() + 1;
-  for (const Command& c : plan.commands)
-    if (curve(c)) expected += chords.emplace_back(chord_count(c.path, device.chord_tolerance_mm)) - 1;
-  out.commands.reserve(expected);
+ProgramCount count_program(const Plan& plan, const DeviceDescription& device, std::size_t begin,
+                           std::size_t end) {
+  // One pass over the plan: it is megabytes (40 rows: 23 120 commands of 192 bytes), and
+  // reading it is most of this pass's 75 µs. Curves get their chord counts (a square root and
+  // a division each), kept for the conversion. The reach bounds |x| and |y| of every point the
+  // conversion can emit: a line's ends, an arc's whole circle, an ellipse's circumscribed
+  // circle — no sines needed. The running maximum lives in memory (the chord counts call out),
+  // so it is only written when it grows: written on every command, each command waited on the
+  // last one's store (113 µs).
+  ProgramCount n;
+  end = std::min(end, plan.commands.size());
+  begin = std::min(begin, end);
+  n.commands = end - begin;
+  double reach = 0;
+  bool nan = false;
+  for (const Command& c : std::span(plan.commands).subspan(begin, end - begin)) {
+    if (is_curve(c))
+      n.commands += n.chords.emplace_back(chord_count(c.path, device.chord_tolerance_mm)) - 1;
+    const Element::Geometry& g = c.path.geometry();
+    double r;
+    if (const Line* l = std::get_if<Line>(&g)) {
+      r = worst(worst(std::abs(l->start.x()), std::abs(l->start.y())),
+                worst(std::abs(l->end.x()), std::abs(l->end.y())));
+    } else if (const CircularArc* a = std::get_if<CircularArc>(&g)) {
+      r = worst(std::abs(a->center.x()), std::abs(a->center.y())) + std::abs(a->radius);
+    } else {
+      const auto& e = std::get<EllipticalArc>(g);
+      r = worst(std::abs(e.center.x()), std::abs(e.center.y())) + worst(std::abs(e.rx), std::abs(e.ry));
+    }
+    if (r > reach) [[unlikely]] reach = r;
+    if (r != r) [[unlikely]] nan = true;
+  }
+  // A margin of 1e-9 of the field for the rounding of the chord recurrence (about 1e-16 of a
+  // radius per chord).
+  n.inside_field = !nan && reach <= device.field_mm / 2 * (1 - 1e-9);
+  return n;
+}
+
+void convert_program(const Plan& plan, const DeviceDescription& device, const ProgramCount& count,
+                     DeviceProgram& out, const std::function<void(std::size_t)>& progress,
+                     std::size_t every) {
   Builder b(device, out);
   b.pen(0);
-  std::size_t next_curve = 0;
+  std::size_t next_curve = 0, reported = 0;
   for (const Command& c : plan.commands) {
-    const std::size_t n = curve(c) ? chords[next_curve++] : 1;
+    const std::size_t n = is_curve(c) ? count.chords[next_curve++] : 1;
     switch (c.role) {
       case CommandRole::stroke:
         if (c.kind == CommandKind::dwell) {
@@ -209,7 +243,23 @@ DeviceProgram device_program(const Plan& plan, const LaserSettings& laser,
       case CommandRole::delay:
         break;  // jump, mark and polygon delays are the board's job (DevicePen)
     }
+    if (out.commands.size() - reported >= every) [[unlikely]] {
+      reported = out.commands.size();
+      if (progress) progress(reported);
+    }
   }
+  if (progress) progress(out.commands.size());
+}
+
+DeviceProgram device_program(const Plan& plan, const LaserSettings& laser,
+                             const DeviceDescription& device) {
+  DeviceProgram out;
+  out.pen = device_pen(plan.pen, laser, DeviceLevel::commands);
+  // Room for every chord up front: a reallocation of tens of thousands of commands costs more
+  // than the count.
+  const ProgramCount count = count_program(plan, device);
+  out.commands.reserve(count.commands + 1);
+  convert_program(plan, device, count, out, {}, std::numeric_limits<std::size_t>::max());
   return out;
 }
 

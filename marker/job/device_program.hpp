@@ -11,6 +11,7 @@
 // stroke. Lit arcs and ellipse arcs become chords within the device's chord tolerance unless the
 // device takes circular arcs.
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -38,6 +39,26 @@ DevicePen device_pen(const Pen& pen, const LaserSettings& laser, DeviceLevel lev
 // field before anything is returned: throws DeviceFaultError (out_of_field) naming the point.
 DeviceProgram device_program(const Plan& plan, const LaserSettings& laser,
                              const DeviceDescription& device);
+
+// The conversion in two steps, for ProgramStream (program_stream.hpp), which runs the second on
+// a worker thread.
+struct ProgramCount {
+  std::size_t commands = 0;          // at least as many device commands as the plan commands
+                                     // become (the program's leading pen command not included)
+  std::vector<std::size_t> chords;   // each curve's chord count, in plan order
+  bool inside_field = false;         // every point they can become lies in the field, with a
+                                     // margin: converting them cannot be refused
+};
+// Counts plan commands [begin, end).
+ProgramCount count_program(const Plan& plan, const DeviceDescription& device,
+                           std::size_t begin = 0,
+                           std::size_t end = std::numeric_limits<std::size_t>::max());
+// Appends the plan's device commands to `out` (reserved for count.commands + 1 beforehand, so
+// it never reallocates), calling `progress(n)` each time `every` more commands are in and once at
+// the end. Throws as device_program does; commands before the refused point stay in `out`.
+void convert_program(const Plan& plan, const DeviceDescription& device, const ProgramCount& count,
+                     DeviceProgram& out, const std::function<void(std::size_t)>& progress,
+                     std::size_t every);
 
 // Ink: the lit length of the program's first `done` commands (all by default). Walked on demand
 // (a job asks once, when it stopped early) rather than summed per command while converting:

@@ -1,13 +1,16 @@
 // A job on a command-level device (a vector board): the plan becomes device commands, checked
-// against the device's field before begin_job, submitted in chunks; a watcher turns a stop
-// request into device.abort() whether the board is taking commands or finishing them.
+// against the device's field before begin_job, submitted in chunks as they are converted; a
+// watcher turns a stop request into device.abort() whether the board is taking commands or
+// finishing them.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <limits>
 #include <thread>
 
 #include "fonts/error.hpp"
 #include "marker/job/device_program.hpp"
+#include "marker/job/program_stream.hpp"
 #include "marker/job/job_run.hpp"
 
 namespace mark {
@@ -18,9 +21,12 @@ void run_commands(const JobSpec& spec, const JobOptions& options, CommandDevice&
     throw InputError("--inject underrun applies to sample-level devices; " +
                      device.describe().name + " runs its own clock");
   const DeviceDescription desc = device.describe();
-  const DeviceProgram program = device_program(result.job.plan, spec.laser, desc);
+  // Converted while it is submitted (a worker thread, for big plans that lie in the field); a
+  // plan that may leave the field is converted whole here, and a point outside it throws
+  // before begin_job.
+  ProgramStream stream(result.job.plan, spec.laser, desc);
   JobHeader header = job_header(spec, result.job, desc);
-  header.pens.front() = program.pen;
+  header.pens.front() = stream.pen();
   device.begin_job(header);
 
   std::atomic<bool> finished{false};
@@ -40,29 +46,42 @@ void run_commands(const JobSpec& spec, const JobOptions& options, CommandDevice&
     });
   }
 
-  const std::span<const DeviceCommand> all(program.commands);
-  const std::uint64_t abort_at =
-      options.inject.kind == Injection::Kind::abort ? options.inject.at : all.size() + 1;
+  const std::uint64_t abort_at = options.inject.kind == Injection::Kind::abort
+                                     ? options.inject.at
+                                     : std::numeric_limits<std::uint64_t>::max();
   constexpr std::size_t kChunk = 256;
   std::optional<DeviceFault> fault;
-  for (std::size_t i = 0; i < all.size();) {
+  for (std::size_t i = 0;;) {
+    std::span<const DeviceCommand> chunk;
+    try {
+      // Up to the injected abort, and at least one command to know whether there are more.
+      const std::uint64_t before_abort = abort_at > i ? abort_at - i : 0;
+      chunk = stream.next(i, std::clamp<std::uint64_t>(before_abort, 1, kChunk));
+    } catch (const DeviceFaultError& e) {
+      // The worker met a point it could not convert (the plan's reach said it could not): the
+      // board has part of the job, so it is stopped like on any fault.
+      stop_board();
+      fault = e.fault();
+      break;
+    }
+    if (chunk.empty()) break;
     if ((options.stop && options.stop->requested()) || i >= abort_at) {
       stop_board();
       break;
     }
-    const std::size_t n = std::min<std::size_t>({kChunk, all.size() - i, abort_at - i});
     try {
-      device.submit(all.subspan(i, n));
+      device.submit(chunk);
     } catch (const DeviceFaultError& e) {
       fault = e.fault();
       break;
     }
-    i += n;
+    i += chunk.size();
   }
   result.device = device.end_job();
   finished.store(true, std::memory_order_release);
   if (watcher.joinable()) watcher.join();
 
+  const DeviceProgram program = stream.finish();
   result.commands = program.commands.size();
   result.mark_time_s = result.device.device_time_s;
   if (!result.device.fault && fault) result.device.fault = fault;

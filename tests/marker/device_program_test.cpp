@@ -7,12 +7,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <thread>
 #include <numbers>
 
 #include "fonts/catalog.hpp"
 #include "fonts/error.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
+#include "marker/job/program_stream.hpp"
 #include "tests/marker/plan_test_support.hpp"
 #include "tests/marker/recording_command_device.hpp"
 
@@ -232,6 +235,131 @@ TEST(DeviceProgram, TransportFaultIsReportedWithWhatWasMarked) {
   EXPECT_EQ(r.stopped_at, 25u);
   const DeviceProgram p = device_program(r.job.plan, board_job().laser, dev.describe());
   EXPECT_DOUBLE_EQ(r.ink_marked, ink_fraction(p, 25));
+}
+
+// Rows of the 62 characters at 1 mm: ten of them are a plan of thousands of commands, above
+// the stream's threshold.
+JobSpec rows_job(int rows) {
+  JobSpec spec = board_job();
+  std::string text;
+  for (int r = 0; r < rows; ++r)
+    text += (r ? "\n" : "") + std::string("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789");
+  spec.text = text;
+  spec.layout.height_mm = 1;
+  spec.layout.align = Align::center;
+  spec.layout.base = Point(0, 0.75 * rows);
+  return spec;
+}
+
+// Field by field, exactly: the stream must hand out the very commands the whole conversion makes.
+void expect_same_commands(std::span<const DeviceCommand> got, std::span<const DeviceCommand> want) {
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    const DeviceCommand& a = got[i];
+    const DeviceCommand& b = want[i];
+    ASSERT_TRUE(a.op == b.op && a.laser == b.laser && a.pen == b.pen && a.x_mm == b.x_mm &&
+                a.y_mm == b.y_mm && a.cx_mm == b.cx_mm && a.cy_mm == b.cy_mm &&
+                a.sweep_rad == b.sweep_rad && a.speed_mm_s == b.speed_mm_s && a.dwell_s == b.dwell_s)
+        << "command " << i;
+  }
+}
+
+std::vector<DeviceCommand> drain(ProgramStream& s, std::size_t max) {
+  std::vector<DeviceCommand> got;
+  for (auto c = s.next(0, max); !c.empty(); c = s.next(got.size(), max)) {
+    EXPECT_LE(c.size(), max);
+    got.insert(got.end(), c.begin(), c.end());
+  }
+  return got;
+}
+
+TEST(DeviceProgram, StreamHandsOutTheWholeConversionsCommands) {
+  const JobSpec spec = rows_job(10);
+  const CompiledJob job = compile_job(spec, DeviceLevel::commands);
+  ASSERT_GE(job.plan.commands.size(), kStreamMinPlanCommands);
+  const DeviceProgram whole = device_program(job.plan, spec.laser, board());
+  ASSERT_GT(whole.chords, 1000u);
+  const bool cores = std::thread::hardware_concurrency() >= 2;
+  for (StreamMode mode : {StreamMode::automatic, StreamMode::worker, StreamMode::whole}) {
+    for (std::size_t max : {1, 7, 256, 1 << 20}) {
+      ProgramStream s(job.plan, spec.laser, board(), mode);
+      EXPECT_EQ(s.streaming(), mode == StreamMode::worker || (mode == StreamMode::automatic && cores));
+      EXPECT_DOUBLE_EQ(s.pen().laser.power_pct, 80);
+      const std::vector<DeviceCommand> got = drain(s, max);
+      expect_same_commands(got, whole.commands);
+      EXPECT_TRUE(s.next(got.size(), max).empty());
+      EXPECT_TRUE(s.next(got.size() + 5, max).empty());
+      const DeviceProgram p = s.finish();
+      expect_same_commands(p.commands, whole.commands);
+      EXPECT_EQ(p.chords, whole.chords);
+      EXPECT_EQ(p.pen.laser_on_delay_s, whole.pen.laser_on_delay_s);
+    }
+  }
+}
+
+// A plan whose reach (an arc's whole circle) crosses the field edge while its points do not is
+// converted whole before anything is handed out; one with a point outside the field is refused
+// by the constructor with device_program's message, whether or not it is big; so is a NaN.
+TEST(DeviceProgram, StreamConvertsWholeFirstWhatMayLeaveTheField) {
+  const Pen pen = pen_for_head(head_sl10(), CornerStrategy::none, 1000);
+  // The left half of a circle of radius 5 around (10, 0): x from 5 to 10, the circle to 15.
+  const Element arc = Element::arc({10, 0}, 5, std::numbers::pi / 2, std::numbers::pi);
+  const Plan plan = plan_figure(test::figure_of({{arc}}), pen);
+  const DeviceProgram whole = device_program(plan, {}, board(0.005, 22));
+  ProgramStream s(plan, {}, board(0.005, 22), StreamMode::worker);
+  EXPECT_FALSE(s.streaming());
+  expect_same_commands(drain(s, 256), whole.commands);
+  ProgramStream inside(plan, {}, board(0.005, 40), StreamMode::worker);
+  EXPECT_TRUE(inside.streaming());
+  expect_same_commands(drain(inside, 256), whole.commands);
+
+  const auto refusal = [](auto&& make) -> std::string {
+    try {
+      make();
+    } catch (const DeviceFaultError& e) {
+      EXPECT_EQ(e.fault().category, FaultCategory::out_of_field);
+      return e.what();
+    }
+    ADD_FAILURE() << "accepted";
+    return "";
+  };
+  for (StreamMode mode : {StreamMode::worker, StreamMode::whole}) {
+    const std::string want = refusal([&] { device_program(plan, {}, board(0.005, 16)); });
+    EXPECT_NE(want.find("outside the field ±8.000 mm"), std::string::npos) << want;
+    EXPECT_EQ(refusal([&] { ProgramStream(plan, {}, board(0.005, 16), mode); }), want);
+  }
+  const JobSpec big = rows_job(10);
+  const CompiledJob job = compile_job(big, DeviceLevel::commands);
+  const std::string want = refusal([&] { device_program(job.plan, {}, board(0.005, 30)); });
+  EXPECT_EQ(refusal([&] { ProgramStream(job.plan, {}, board(0.005, 30)); }), want);
+
+  Plan bad;
+  bad.pen = pen;
+  bad.commands.push_back(Command::jump({0, 0}, {std::numeric_limits<double>::quiet_NaN(), 1}, 0));
+  EXPECT_NE(refusal([&] { ProgramStream(bad, {}, board(), StreamMode::worker); }).find("nan"),
+            std::string::npos);
+}
+
+// The runner submits a big job while it is converted: the board gets exactly the whole
+// conversion's commands, in order; an injected abort stops it at the command with the ink of
+// the commands before it.
+TEST(DeviceProgram, BigJobStreamsToTheBoardInOrder) {
+  const JobSpec spec = rows_job(10);
+  RecordingCommandDevice dev;
+  const JobResult r = run_job(spec, JobOptions{}, dev);
+  EXPECT_EQ(r.outcome, JobOutcome::done);
+  const DeviceProgram whole = device_program(r.job.plan, spec.laser, dev.describe());
+  expect_same_commands(dev.received, whole.commands);
+  EXPECT_EQ(r.commands, whole.commands.size());
+
+  RecordingCommandDevice stopped;
+  JobOptions o;
+  o.inject = {Injection::Kind::abort, 5000};
+  const JobResult a = run_job(spec, o, stopped);
+  EXPECT_EQ(a.outcome, JobOutcome::aborted);
+  EXPECT_EQ(stopped.received.size(), 5000u);
+  EXPECT_EQ(a.stopped_at, 5000u);
+  EXPECT_DOUBLE_EQ(a.ink_marked, ink_fraction(whole, 5000));
 }
 
 TEST(DeviceProgram, StopRequestBeforeTheJobAbortsTheBoard) {

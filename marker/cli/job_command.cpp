@@ -48,6 +48,7 @@ struct NewArgs {
   std::optional<long long> limit;
   std::string at_limit = "stop", alphabet = "decimal", padding = "keep", reset = "never";
   std::string time_zone = "local";
+  std::string device = "sim";
   std::string shifts;  // "A=06:00,B=14:00"
   std::vector<std::string> vars;
   bool force = false;
@@ -163,7 +164,7 @@ nlohmann::ordered_json new_job_json(const NewArgs& a) {
 
   nlohmann::ordered_json job = {{"format", kJobFormat},
                         {"name", std::filesystem::path(a.output).stem().string()},
-                        {"device", "sim"},
+                        {"device", a.device},
                         {"head", {{"model", a.head}, {"spot_diameter_um", a.spot_um}}},
                         {"field_mm", l.field_mm},
                         {"time_zone", a.time_zone}};
@@ -274,6 +275,7 @@ Command make_job_command() {
                           kMarksPerSerialRange)
             ->capture_default_str();
         n->add_option("--reset", a.reset, "counters: never, midnight, shift")->capture_default_str();
+        n->add_option("--device", a.device, "the device the job marks on: sim, or the station's board: lmc, lmc:SERIAL")->capture_default_str();
         n->add_option("--time-zone", a.time_zone, "dates, shifts and resets: local, UTC or e.g. Europe/Berlin")->capture_default_str();
         n->add_option("--shifts", a.shifts, "shift codes and start times: A=06:00,B=14:00,C=22:00");
         n->add_option("--var", a.vars, "variable default NAME=VALUE (repeatable)");

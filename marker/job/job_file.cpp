@@ -5,6 +5,8 @@
 #include <set>
 #include <sstream>
 
+#include "driver/device_error.hpp"
+#include "driver/lmc/lmc_spec.hpp"
 #include "fonts/error.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job_parse_context.hpp"
@@ -159,6 +161,19 @@ void check_name(JsonReader& r, std::string_view key, const std::string& name, co
       r.fail(key, std::string("a ") + what + " name cannot hold control characters, braces or colons");
 }
 
+// "sim", or a board as --device names it: a station's job says which device it marks on.
+std::string parse_device(JsonReader& top) {
+  const std::optional<std::string> device = top.string("device");
+  if (!device || *device == "sim") return "sim";
+  try {
+    if (lmc::parse_lmc_spec(*device, "")) return *device;
+  } catch (const DeviceError& e) {
+    top.fail("device", e.what());
+  }
+  top.fail("device", "'" + *device + "' is not a device (sim: the simulated scanner; lmc, "
+                     "lmc:SERIAL, lmc-capture:FILE: a BJJCZ LMC board)");
+}
+
 }  // namespace
 
 std::map<std::string, CounterSpec> JobFile::used_counters() const {
@@ -187,7 +202,7 @@ JobFile parse_job(std::string_view text, const std::string& source) {
   if (*format != kJobFormat)
     top.fail("format", "\"" + *format + "\" is not a format this program reads (" + std::string(kJobFormat) + ")");
   job.job_name = top.string("name").value_or(std::filesystem::path(source).stem().string());
-  job.device = top.choice("device", {"sim"}).value_or("sim");
+  job.device = parse_device(top);
   job.head = parse_head(top);
   job.head.field_mm = top.number("field_mm", kFieldRange).value_or(job.head.field_mm);
   if (auto z = top.string("time_zone")) {

@@ -56,6 +56,9 @@ std::string with(const std::string& from, const std::string& to) {
 TEST(JobFile, ReadsEveryField) {
   const JobFile job = parse_job(kJob, "job.json");
   EXPECT_EQ(job.job_name, "bracket");
+  EXPECT_EQ(job.device, "sim");  // the default
+  for (const char* board : {"lmc", "lmc:1234ABCD", "lmc-capture:bracket.lmc", "sim"})
+    EXPECT_EQ(parse_job(with("\"field_mm\": 100", std::string("\"field_mm\": 100, \"device\": \"") + board + "\""), "job.json").device, board);
   EXPECT_EQ(job.head.name, "SL14");
   EXPECT_DOUBLE_EQ(job.head.field_mm, 100);
   EXPECT_DOUBLE_EQ(job.head.spot_diameter_um, 50);
@@ -143,6 +146,9 @@ TEST(JobFile, MalformedFilesGiveOneLineErrors) {
       {with("\"field_mm\": 100", "\"field_mm\": -1"), "job.json: field_mm: -1 mm is outside 1 to 10000 mm"},
       {with("\"variables\": {\"lot\": \"A00\"}", "\"variables\": {\"lot\": 7}"), "job.json: variables.lot: expected a string, found a number"},
       {with("\"counters\": {", "\"counters\": {\"date\": {},"), "job.json: counters.date: \"date\" is a field name of its own; call the counter something else"},
+      {with("\"field_mm\": 100", "\"field_mm\": 100, \"device\": \"usb0\""), "job.json: device: 'usb0' is not a device (sim: the simulated scanner; lmc, lmc:SERIAL, lmc-capture:FILE: a BJJCZ LMC board)"},
+      {with("\"field_mm\": 100", "\"field_mm\": 100, \"device\": \"lmc:xyz\""), "job.json: device: 'lmc:xyz': a board serial is 1 to 8 hex digits (use lmc, lmc:SERIAL with the serial `marker devices` lists, or lmc-capture:FILE)"},
+      {with("\"field_mm\": 100", "\"field_mm\": 100, \"device\": 7"), "job.json: device: expected a string, found a number"},
   };
   for (const auto& [text, expected] : cases) EXPECT_EQ(error_of(text), expected);
 }

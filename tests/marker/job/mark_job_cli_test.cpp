@@ -14,6 +14,7 @@
 #include <sstream>
 #include <thread>
 
+#include "driver/lmc/capture_link.hpp"
 #include "marker/store/open_store.hpp"
 #include "tests/marker/cli_runner.hpp"
 
@@ -146,6 +147,38 @@ TEST_F(MarkJobCli, AFailingDeviceIsRecordedFailed) {
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0]["outcome"], "failed");
   EXPECT_EQ(serial()["next"], 42);
+}
+
+// A station's job names its board: `job new --device`, and `mark --job` marks every part on it
+// (here the capture board, which writes the bytes instead of sending them): one list per part,
+// each with that part's own serial.
+TEST_F(MarkJobCli, TheJobsDeviceMarksEveryPart) {
+  const std::string board = (dir / "line.lmc").string();
+  const std::string on_board = (dir / "board.json").string();
+  auto r = run_cli({"job", "new", "-o", on_board, "--text", "SN {serial}", "--start", "7",
+                    "--height", "2", "--device", "lmc-capture:" + board});
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run_cli({"mark", "--job", on_board, "--virtual-time", "--station", "line-1", "--count", "2",
+               "--store", (dir / "board.sqlite").string(), "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto parts = json_lines(r.out);
+  ASSERT_EQ(parts.size(), 2u);
+  for (const auto& p : parts) {
+    EXPECT_EQ(p["outcome"], "done");
+    EXPECT_EQ(p["device"], "lmc 00000000");
+    EXPECT_EQ(p["objects"][0]["device_figures"]["packets"], 1.0);
+  }
+  EXPECT_EQ(parts[0]["objects"][0]["text"], "SN 7");
+  EXPECT_EQ(parts[1]["objects"][0]["text"], "SN 8");
+  // The board is opened once per run: the capture holds both parts' lists, one packet each.
+  std::size_t lists = 0;
+  for (const auto& rec : lmc::read_capture(board)) lists += rec.packet;
+  EXPECT_EQ(lists, 2u);
+  r = run_cli({"job", "new", "-o", (dir / "bad.json").string(), "--text", "SN {serial}",
+               "--device", "lmc:xyz"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("device: 'lmc:xyz': a board serial is 1 to 8 hex digits"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.json"));
 }
 
 TEST_F(MarkJobCli, SetVariablesAndTheirRefusals) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <system_error>
 
 namespace mark {
 namespace {
@@ -33,20 +34,19 @@ ProgramStream::ProgramStream(const Plan& plan, const LaserSettings& laser,
       (mode == StreamMode::automatic && size >= kStreamMinPlanCommands &&
        std::thread::hardware_concurrency() >= 2);
   if (!worth_a_thread) {
-    // Whole, here: a refusal throws before the caller has seen a command.
-    count_ = count_program(plan_, device_);
-    program_.commands.reserve(count_.commands + 1);
-    convert({}, kNever);
-    data_ = program_.commands.data();
-    converted_.store(program_.commands.size(), std::memory_order_relaxed);
-    ended_.store(true, std::memory_order_relaxed);
+    convert_here();
     return;
   }
   // The worker starts first and counts the plan's second half while this thread counts the
   // first (the count reads the whole plan, megabytes: half each halves the wait); then it
   // converts once told whether the plan lies in the field.
   const std::size_t half = size / 2;
-  worker_ = std::thread([this, half] { work(half); });
+  try {
+    worker_ = std::thread([this, half] { work(half); });
+  } catch (const std::system_error&) {
+    convert_here();  // no thread to be had: the part is still marked, converted on this one
+    return;
+  }
   try {
     count_ = count_program(plan_, device_, 0, half);
     wait_until([&] { return counted_.load(std::memory_order_acquire); });
@@ -68,6 +68,16 @@ ProgramStream::ProgramStream(const Plan& plan, const LaserSettings& laser,
   // point outside it is refused here, before the job begins.
   worker_.join();
   if (error_) std::rethrow_exception(error_);
+}
+
+void ProgramStream::convert_here() {
+  // Whole, on the calling thread: a refusal throws before the caller has seen a command.
+  count_ = count_program(plan_, device_);
+  program_.commands.reserve(count_.commands + 1);
+  convert({}, kNever);
+  data_ = program_.commands.data();
+  converted_.store(program_.commands.size(), std::memory_order_relaxed);
+  ended_.store(true, std::memory_order_relaxed);
 }
 
 void ProgramStream::work(std::size_t half) {

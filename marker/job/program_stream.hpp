@@ -54,6 +54,7 @@ class ProgramStream {
 
  private:
   enum Go : int { wait, stream, whole, quit };
+  void convert_here();
   void work(std::size_t half);
   void convert(const std::function<void(std::size_t)>& progress, std::size_t every);
   void start(Go go) { go_.store(go, std::memory_order_release); }

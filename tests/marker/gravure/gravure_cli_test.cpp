@@ -21,8 +21,8 @@ const Files& files() {
     const GrayImage img = wedge_and_lines(112, 56, &mask);  // 4 mm × 2 mm
     Files out{fresh_temp_file("marker_gravure_cli", "wedge.pgm").string(),
               fresh_temp_file("marker_gravure_cli", "mask.pgm").string()};
-    write_pgm(img, out.image);
-    write_pgm(mask, out.mask);
+    save_pgm(img, out.image);
+    save_pgm(mask, out.mask);
     return out;
   }();
   return f;

@@ -33,8 +33,9 @@ inline GrayImage wedge_and_lines(int width = 280, int height = 112, GrayImage* m
   return img;
 }
 
-// Binary PGM (P5, 8 bit).
-inline void write_pgm(const GrayImage& img, const std::string& path) {
+// Binary PGM (P5, 8 bit) at `path`. (Not write_pgm: tool_render.hpp has a mark::test::write_pgm
+// with the same parameters, and two such functions are one symbol to the linker.)
+inline void save_pgm(const GrayImage& img, const std::string& path) {
   std::ofstream out(path, std::ios::binary);
   out << "P5\n" << img.width << " " << img.height << "\n255\n";
   for (float v : img.pixels) out.put(static_cast<char>(static_cast<std::uint8_t>(std::lround(v * 255))));

@@ -324,10 +324,13 @@ inline double segment_length(std::array<std::uint16_t, 2> a, std::array<std::uin
   const std::int64_t dx = std::int64_t(a[0]) - b[0], dy = std::int64_t(a[1]) - b[1];
   return std::sqrt(double(dx * dx + dy * dy));  // exact below 2^53: one rounding, in the sqrt
 }
+// A segment length → its distance word: truncated, clamped to 0xFFFF.
+inline std::uint16_t distance_word(double length) {
+  return length >= 65535.0 ? std::uint16_t(0xFFFF) : static_cast<std::uint16_t>(length);
+}
 inline std::uint16_t segment_distance(std::array<std::uint16_t, 2> a,
                                       std::array<std::uint16_t, 2> b) {
-  const double d = segment_length(a, b);
-  return d >= 65535.0 ? std::uint16_t(0xFFFF) : static_cast<std::uint16_t>(d);
+  return distance_word(segment_length(a, b));
 }
 // The decoders: speed word → mm/s, signed µs pair → s, 10 µs word → s, period → kHz, 12-bit → %.
 double decode_speed(std::uint16_t word, const FieldUnits& u);

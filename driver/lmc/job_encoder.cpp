@@ -169,7 +169,6 @@ std::size_t JobEncoder::add_moves(std::span<const DeviceCommand> cs, std::uint64
     const auto to = units_.point(c.x_mm, c.y_mm);
     if (to[0] == at_[0] && to[1] == at_[1]) continue;  // nowhere to go (meerk40t drops these too)
     const double length = segment_length(at_, to);
-    const std::uint16_t d = length >= 65535.0 ? std::uint16_t(0xFFFF) : static_cast<std::uint16_t>(length);
     // The estimate: length / speed (units per ms), the reciprocal cached per speed word; a
     // JumpTo is followed by the board's jump delay.
     if (v != inverse_for_) [[unlikely]] {
@@ -178,7 +177,7 @@ std::size_t JobEncoder::add_moves(std::span<const DeviceCommand> cs, std::uint64
     }
     double t = length * inverse_speed_;
     if (op == Op::JumpTo) t += jump_delay_s_;
-    push(word(op, to[0], to[1], 0, d), t);
+    push(word(op, to[0], to[1], 0, distance_word(length)), t);
     ++figures_.moves;
     at_ = to;
   }

@@ -1,6 +1,6 @@
 #pragma once
 // A request to stop a job from outside: Ctrl-C (a signal handler), an operator's stop button, a
-// PLC. request() is async-signal-safe (one lock-free atomic exchange and clock_gettime), so a
+// PLC. request() is async-signal-safe (lock-free atomics and clock_gettime), so a
 // SIGINT handler may call it; the drain polls requested() after every wait and puts the laser
 // out within one block. The request's time is kept so the drain can report the latency from
 // the request to laser off.
@@ -16,12 +16,16 @@ class StopFlag {
   static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<std::int64_t>::is_always_lock_free,
                 "a signal handler may only touch lock-free atomics");
 
+  // The time goes in before the flag: a drain that sees requested() also sees when. The other
+  // order left a window (wide when the handler is preempted) in which a stop had no time and
+  // the job reported no stop latency. The first request's time is kept.
   void request() noexcept {
-    if (requested_.exchange(true, std::memory_order_acq_rel)) return;
-    requested_at_ns_.store(now_ns(), std::memory_order_release);
+    std::int64_t none = 0;
+    requested_at_ns_.compare_exchange_strong(none, now_ns(), std::memory_order_acq_rel);
+    requested_.store(true, std::memory_order_release);
   }
   bool requested() const noexcept { return requested_.load(std::memory_order_acquire); }
-  // steady-clock (CLOCK_MONOTONIC) time of the first request in ns; 0 until it is stored.
+  // steady-clock (CLOCK_MONOTONIC) time of the first request in ns; 0 while none was made.
   std::int64_t requested_at_ns() const noexcept {
     return requested_at_ns_.load(std::memory_order_acquire);
   }

@@ -22,10 +22,10 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "driver/grey_png.hpp"
-#include "driver/quality_class.hpp"
+#include "base/error.hpp"
+#include "driver/sim/grey_png.hpp"
+#include "driver/sim/quality_class.hpp"
 #include "fonts/catalog.hpp"
-#include "fonts/error.hpp"
 #include "marker/cli/code_options.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/device_factory.hpp"
@@ -37,9 +37,9 @@
 #include "marker/cli/mark_job.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
+#include "marker/cli/pen_options.hpp"
 #include "marker/codes/code_data.hpp"
 #include "marker/codes/code_json.hpp"
-#include "marker/cli/pen_options.hpp"
 #include "marker/job/auto_speed.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/stroke_font.hpp"
 #include "marker/codes/code_data.hpp"
 #include "marker/fill/fill.hpp"

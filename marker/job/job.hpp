@@ -19,9 +19,9 @@
 #include <string_view>
 
 #include "driver/device.hpp"
-#include "driver/head_model.hpp"
-#include "driver/quality.hpp"
-#include "driver/sim_scanner.hpp"
+#include "driver/sim/head_model.hpp"
+#include "driver/sim/quality.hpp"
+#include "driver/sim/sim_scanner.hpp"
 #include "fonts/stroke_font.hpp"
 #include "marker/codes/code_object.hpp"
 #include "marker/codes/verify.hpp"

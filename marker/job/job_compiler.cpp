@@ -1,6 +1,6 @@
 #include "marker/job/job_compiler.hpp"
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/job/device_program.hpp"
 #include "marker/job/job_checks.hpp"
 #include "marker/plan/passes.hpp"

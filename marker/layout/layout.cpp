@@ -10,7 +10,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/utf8.hpp"
 
 namespace mark {

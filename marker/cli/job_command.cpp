@@ -42,6 +42,7 @@ struct NewArgs {
   std::string speed = "auto";  // mm/s, or auto: from the first part's figure and the head
   std::optional<double> jump_speed_mm_s, tick_us;
   double power_pct = 100, frequency_khz = 30, pulse_width_ns = 0;
+  std::string source = "fiber";
   int passes = 1;
   long long start = 1, step = 1, marks_per_serial = 1;
   int width = 0;
@@ -93,6 +94,7 @@ int run_check(const CheckArgs& a) {
                               {"power_pct", pen.laser.power_pct},
                               {"frequency_khz", pen.laser.frequency_khz},
                               {"pulse_width_ns", pen.laser.pulse_width_ns},
+                              {"source", std::string(to_string(pen.laser.source))},
                               {"passes", pen.passes},
                               {"pulse_spacing_um", spacing_um}, {"pulse_overlap_fraction", overlap}});
   }
@@ -158,7 +160,7 @@ nlohmann::ordered_json new_job_json(const NewArgs& a) {
 
   nlohmann::ordered_json pen = {{"corner", a.corner}, {"speed_mm_s", a.speed == "auto" ? 1000.0 : speed_number(a.speed)},
                         {"power_pct", a.power_pct}, {"frequency_khz", a.frequency_khz},
-                        {"pulse_width_ns", a.pulse_width_ns}, {"passes", a.passes}};
+                        {"pulse_width_ns", a.pulse_width_ns}, {"source", a.source}, {"passes", a.passes}};
   if (a.jump_speed_mm_s) pen["jump_speed_mm_s"] = *a.jump_speed_mm_s;
   if (a.tick_us) pen["tick_us"] = *a.tick_us;
 
@@ -260,6 +262,9 @@ Command make_job_command() {
             ->capture_default_str();
         add_ranged_option(*n, "--pulse-width", a.pulse_width_ns, "MOPA pulse width, ns (0: the source's default)",
                           kPulseWidthRange)
+            ->capture_default_str();
+        n->add_option("--source", a.source, "laser source: fiber (Q-switched), mopa, co2, uv")
+            ->check(CLI::IsMember({"fiber", "mopa", "co2", "uv"}))
             ->capture_default_str();
         add_ranged_option(*n, "--passes", a.passes, "times each object is marked", kPassesRange)->capture_default_str();
         add_ranged_option(*n, "--start", a.start, "counters: first value", kCounterValueRange)->capture_default_str();

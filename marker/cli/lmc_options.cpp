@@ -18,9 +18,6 @@ void add_lmc_options(CLI::App& app, LmcArgs& a) {
   app.add_flag("--swap-xy", a.swap_xy, "LMC: the head's x and y galvos are swapped");
   app.add_flag("--flip-x", a.flip_x, "LMC: mirror x (the head's x galvo is wired reversed)");
   app.add_flag("--flip-y", a.flip_y, "LMC: mirror y");
-  app.add_option("--source", a.source, "LMC: laser source")
-      ->check(CLI::IsMember({"fiber", "mopa"}))
-      ->capture_default_str();
   add_ranged_option(app, "--laser-bit", a.laser_bit, "LMC: output-port bit that enables the laser", kPortBitRange)
       ->capture_default_str();
   add_ranged_option(app, "--red-bit", a.red_bit, "LMC: output-port bit of the red pointer", kPortBitRange)
@@ -42,7 +39,6 @@ lmc::LmcOptions to_lmc_options(const LmcArgs& a, double field_mm) {
   o.field_mm = field_mm;
   o.chord_tolerance_mm = a.chord_tolerance_um * 1e-3;
   o.axes = {a.swap_xy, a.flip_x, a.flip_y};
-  o.source = a.source == "mopa" ? lmc::LaserSource::mopa : lmc::LaserSource::fiber;
   o.laser_port_bit = a.laser_bit;
   o.red_pointer_bit = a.red_bit;
   o.polygon_delay_unit = a.polygon_unit == "us" ? lmc::PolygonDelayUnit::signed_us

@@ -1,7 +1,8 @@
 #pragma once
 // The options every command that drives an LMC board shares: the correction file, how the head
-// is wired (--swap-xy, --flip-x, --flip-y), the laser source, the output-port bits, the polygon
-// delay's units and the chord tolerance. The lens field is the layout's --field.
+// is wired (--swap-xy, --flip-x, --flip-y), the output-port bits, the polygon delay's units and
+// the chord tolerance. The lens field is the layout's --field; the laser source is the pen's
+// (--source).
 #include <CLI/CLI.hpp>
 #include <string>
 
@@ -12,7 +13,6 @@ namespace mark::cli {
 struct LmcArgs {
   std::string cor_file;
   bool swap_xy = false, flip_x = false, flip_y = false;
-  std::string source = "fiber";
   int laser_bit = 0;
   int red_bit = 8;
   std::string polygon_unit = "10us";

@@ -66,6 +66,7 @@ struct MarkArgs {
   std::string inject;
   std::string require_quality;
   LaserSettings laser;
+  std::string source = "fiber";  // laser.source, as --source names it
   LmcArgs lmc;
   std::string code;  // SYMBOLOGY:DATA
   CodeArgs code_args;
@@ -119,6 +120,8 @@ JobSpec make_spec(const MarkArgs& a) {
   pen.speed_mm_s = speed_mm_s;
   spec.pen = make_pen(pen, spec.head);
   spec.laser = a.laser;
+  spec.laser.source = *parse_laser_source(a.source);
+  check_laser_settings(spec.laser, "--source " + a.source + ": ");
   return spec;
 }
 
@@ -417,7 +420,12 @@ Command make_mark_command() {
                           kFrequencyRange)
             ->capture_default_str();
         add_ranged_option(*sub, "--pulse-width", a->laser.pulse_width_ns,
-                          "MOPA pulse width, ns (0: the source's default; LMC --source mopa)", kPulseWidthRange)
+                          "MOPA pulse width, ns (0: the source's default; only --source mopa takes another)",
+                          kPulseWidthRange)
+            ->capture_default_str();
+        sub->add_option("--source", a->source,
+                        "laser source: fiber (Q-switched), mopa, co2, uv (docs/lmc.md: what each takes)")
+            ->check(CLI::IsMember({"fiber", "mopa", "co2", "uv"}))
             ->capture_default_str();
         add_lmc_options(*sub, a->lmc);
         return sub;

@@ -149,6 +149,12 @@ JobPen parse_pen(JsonReader p, const std::string& name, const HeadModel& head) {
   pen.laser.power_pct = p.number("power_pct", kPowerRange).value_or(pen.laser.power_pct);
   pen.laser.frequency_khz = p.number("frequency_khz", kFrequencyRange).value_or(pen.laser.frequency_khz);
   pen.laser.pulse_width_ns = p.number("pulse_width_ns", kPulseWidthRange).value_or(pen.laser.pulse_width_ns);
+  if (auto src = p.choice("source", {"fiber", "mopa", "co2", "uv"})) pen.laser.source = *parse_laser_source(*src);
+  try {
+    check_laser_settings(pen.laser);  // what the pen's source cannot take (a CO2 pulse width)
+  } catch (const InputError& e) {
+    p.fail_here(e.what());
+  }
   pen.passes = static_cast<int>(p.integer("passes", kPassesRange).value_or(1));
   p.finish();
   return pen;

@@ -82,25 +82,25 @@ void JobEncoder::emit_packet(const PacketInfo& info) {
   figures_.list_commands += packet_.used();
   figures_.estimated_s += packet_estimate_s_;
   packet_.clear();
-  packet_estimate_s_ = 0;
+  packet_estimate_s_ = packet_unverified_s_ = 0;
 }
 
 void JobEncoder::flush_full() {
   // Commands before the one being encoded are complete; its own words may straddle.
-  emit_packet(PacketInfo{current_, packet_estimate_s_, false});
+  emit_packet(PacketInfo{current_, packet_estimate_s_, false, packet_estimate_s_ + packet_unverified_s_});
 }
 
 void JobEncoder::start_list(double open_mo_delay_s, std::uint16_t port_bits) {
   // Whatever a failed or aborted list left unsent is dropped here: it must never reach the
   // board as part of the next list.
   packet_.clear();
-  packet_estimate_s_ = 0;
+  packet_estimate_s_ = packet_unverified_s_ = 0;
   // Nothing of what an earlier list set is assumed (see the top of the header).
   jump_speed_ = mark_speed_ = kUnknown;
   qswitch_.reset(), power_.reset(), pulse_width_.reset();
   mark_period_.reset(), fpk_.reset(), power_ratio_.reset();
   on_delay_.reset(), off_delay_.reset(), polygon_.reset(), jump_delay_.reset();
-  jump_delay_s_ = polygon_s_ = 0;
+  jump_delay_s_ = polygon_s_ = polygon_worst_s_ = 0;
   in_run_ = false;
   pen_ = nullptr;
   push(word(Op::ReadyMark));
@@ -152,6 +152,7 @@ void JobEncoder::apply_pen(const BoardPen& p) {
   param(off_delay_, p.laser_off_delay, word(Op::LaserOffDelay, p.laser_off_delay[0], p.laser_off_delay[1]));
   param(polygon_, p.polygon_delay, word(Op::PolygonDelay, p.polygon_delay[0], p.polygon_delay[1]));
   polygon_s_ = std::max(0.0, decode_polygon_delay(p.polygon_delay[0], p.polygon_delay[1], units_.polygon_unit()));
+  polygon_worst_s_ = std::max(polygon_s_, decode_polygon_delay(p.polygon_delay[0], 0, PolygonDelayUnit::ten_us));
   set_jump_delay(p.jump_delay);
 }
 
@@ -209,14 +210,16 @@ std::size_t JobEncoder::add_moves(std::span<const DeviceCommand> cs, std::uint64
     double t = length * inverse_speed_;
     if (op == Op::JumpTo) t += jump_delay_s_;
     const std::array<std::int32_t, 2> d{std::int32_t(to[0]) - at_[0], std::int32_t(to[1]) - at_[1]};
-    if (corner && polygon_s_ > 0 && last_length_ > 0) [[unlikely]] {
+    double unverified = 0;
+    if (corner && polygon_worst_s_ > 0 && last_length_ > 0) [[unlikely]] {
       // PolygonDelay × (1 − cos φ), as the board's variable polygon delay (list_executor.hpp).
       const double cos_phi = double(d[0] * last_d_[0] + d[1] * last_d_[1]) / (length * last_length_);
       t += polygon_s_ * (1 - cos_phi);
+      unverified = (polygon_worst_s_ - polygon_s_) * (1 - cos_phi);
     }
     last_d_ = d;
     last_length_ = length;
-    push(word(op, to[0], to[1], 0, distance_word(length)), t);
+    push(word(op, to[0], to[1], 0, distance_word(length)), t, unverified);
     ++figures_.moves;
     at_ = to;
   }
@@ -277,7 +280,7 @@ void JobEncoder::finish(std::uint64_t commands_in_job) {
   current_ = commands_in_job;
   end_run();
   push(word(Op::EndOfList));
-  emit_packet(PacketInfo{commands_in_job, packet_estimate_s_, true});
+  emit_packet(PacketInfo{commands_in_job, packet_estimate_s_, true, packet_estimate_s_ + packet_unverified_s_});
 }
 
 }  // namespace mark::lmc

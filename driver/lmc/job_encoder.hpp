@@ -70,6 +70,10 @@ struct PacketInfo {
   std::uint64_t commands_complete = 0;
   double estimated_s = 0;
   bool last = false;  // the packet holding the job's EndOfList
+  // The longest the board could take under every reading the references leave open: its
+  // polygon delays read in 10 µs units whatever the host sent (a µs word read so is ten times
+  // longer). What the session's deadline follows; ≥ estimated_s.
+  double allowance_s = 0;
 };
 using PacketSink = std::function<void(const ListPacket&, const PacketInfo&)>;
 
@@ -109,10 +113,11 @@ class JobEncoder {
   bool in_mark_run() const { return in_run_; }
 
  private:
-  void push(const Word& c, double estimated_s = 0) {
+  void push(const Word& c, double estimated_s = 0, double unverified_s = 0) {
     if (packet_.full()) flush_full();
     packet_.push(c);
     packet_estimate_s_ += estimated_s;
+    packet_unverified_s_ += unverified_s;
   }
   // Hands the packet to the sink and counts it once the sink took it.
   void emit_packet(const PacketInfo& info);
@@ -135,6 +140,7 @@ class JobEncoder {
   PacketSink sink_;
   ListPacket packet_;
   double packet_estimate_s_ = 0;
+  double packet_unverified_s_ = 0;  // what an unverified reading could add (PacketInfo::allowance_s)
   std::uint64_t current_ = 0;  // index of the command being encoded
   EncoderFigures figures_;
   const BoardPen* pen_ = nullptr;
@@ -148,6 +154,7 @@ class JobEncoder {
   std::optional<std::array<std::uint16_t, 2>> on_delay_, off_delay_, polygon_, jump_delay_;
   double jump_delay_s_ = 0;            // the jump delay's share of the estimate
   double polygon_s_ = 0;               // the polygon delay, for the estimate of corners
+  double polygon_worst_s_ = 0;         // the same word read in 10 µs units
   std::array<std::int32_t, 2> last_d_{};  // the last move, for a corner's angle
   double last_length_ = 0;
   std::uint32_t inverse_for_ = 0;      // speed word the cached reciprocal belongs to

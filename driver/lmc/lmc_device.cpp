@@ -217,7 +217,7 @@ void LmcDevice::submit(std::span<const DeviceCommand> commands) {
 }
 
 void LmcDevice::send_packet(const ListPacket& packet, const PacketInfo& info) {
-  session_.send_packet(packet, info.estimated_s);
+  session_.send_packet(packet, info.estimated_s, info.allowance_s);
   commands_sent_ = info.commands_complete;
   if (packets_ == 0) first_packet_s_ = seconds(Clock::now() - job_start_);
   ++packets_;

@@ -112,7 +112,7 @@ void Session::upload_correction(const CorrectionTable* table) {
 void Session::begin_list() {
   packets_in_list_ = 0;
   executed_ = false;
-  queued_s_ = 0;
+  queued_s_ = allowed_s_ = 0;
   std::lock_guard lock(pause_mutex_);
   paused_ = false;
   paused_s_ = 0;
@@ -155,15 +155,15 @@ double Session::poll_until(Done done, const char* waiting_for) {
       continue;
     }
     const double ran = running_s();
-    const double allowed = (1 + options_.estimate_margin) * queued_s_ + options_.grace_s;
+    const double allowed = (1 + options_.estimate_margin) * allowed_s_ + options_.grace_s;
     if (ran > allowed) {
-      char buf[320];
+      char buf[360];
       std::snprintf(buf, sizeof buf,
                     "lmc: the board did not %s: it has run its list for %.2f s since ExecuteList "
-                    "(time paused not counted), and what it was sent was estimated at %.2f s "
-                    "(allowed %.2f s: %.0f %% more, and %.1f s); it answers but is not getting "
-                    "through the list",
-                    waiting_for, ran, queued_s_, allowed, 100 * options_.estimate_margin,
+                    "(time paused not counted), and what it was sent was estimated at %.2f s, at "
+                    "most %.2f s (allowed %.2f s: %.0f %% more, and %.1f s); it answers but is not "
+                    "getting through the list",
+                    waiting_for, ran, queued_s_, allowed_s_, allowed, 100 * options_.estimate_margin,
                     options_.grace_s);
       throw BoardTimeout(buf);
     }
@@ -171,7 +171,7 @@ double Session::poll_until(Done done, const char* waiting_for) {
   }
 }
 
-void Session::send_packet(const ListPacket& packet, double estimated_s) {
+void Session::send_packet(const ListPacket& packet, double estimated_s, double allowance_s) {
   const double waited = poll_until([](std::uint16_t s) { return (s & status::ready) != 0; },
                                    "become READY for the next list packet");
   if (waited > 0) {
@@ -182,6 +182,7 @@ void Session::send_packet(const ListPacket& packet, double estimated_s) {
   write_packet(packet, false);
   ++packets_in_list_;
   queued_s_ += estimated_s;
+  allowed_s_ += std::max(estimated_s, allowance_s);
   if (!executed_ && packets_in_list_ >= options_.execute_after_packets) finish_list();
 }
 

@@ -14,7 +14,8 @@
 // board that stops answering (every poll is a transfer with the link's timeout), or one that is
 // still BUSY (or not READY) far past what it was given: more than (1 + estimate_margin) × the
 // host's estimate of every packet sent since ExecuteList, plus grace_s, of time since ExecuteList
-// with the time paused not counted. The estimate is a lower bound (whole ticks per move, a jump
+// with the time paused not counted (the allowance: the estimate, with the polygon delays read in
+// the longer of their two disputed units). The estimate is a lower bound (whole ticks per move, a jump
 // that waits out the laser-off delay and the like make a real list take longer: docs/lmc.md);
 // the margin is there so a slow board is never taken for a dead one.
 //
@@ -138,7 +139,9 @@ class Session {
   // Lists. begin_list after ResetList; send_packet blocks for READY; finish_list sends
   // ExecuteList if the list never started; wait_idle polls until not BUSY.
   void begin_list();
-  void send_packet(const ListPacket& packet, double estimated_s);
+  // `allowance_s`: the longest the packet could take (PacketInfo::allowance_s), what the
+  // deadline follows; below `estimated_s` (the default) it is the estimate.
+  void send_packet(const ListPacket& packet, double estimated_s, double allowance_s = 0);
   void finish_list();
   void wait_idle();
   bool executing() const { return executed_; }
@@ -185,6 +188,7 @@ class Session {
   std::size_t packets_in_list_ = 0;
   bool executed_ = false;
   double queued_s_ = 0;  // estimated work sent in this list
+  double allowed_s_ = 0;  // the longest it could take (allowance_s)
   std::chrono::steady_clock::time_point execute_start_{};
   // Pauses (StopList … RestartList, from any thread): not counted against the deadline.
   mutable std::mutex pause_mutex_;

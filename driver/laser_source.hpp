@@ -50,12 +50,13 @@ std::optional<LaserSource> parse_laser_source(std::string_view name);
 // "fiber, mopa, co2, uv", for messages and help.
 std::string laser_source_names();
 
-// Laser settings of a pen.
+// Laser settings of a pen. (The source last: {power, frequency, pulse width} still reads as it
+// did before there were sources.)
 struct LaserSettings {
-  LaserSource source = LaserSource::fiber;
   double power_pct = 100;       // 0..100 % of the source's power
   double frequency_khz = 30;    // pulse repetition rate (Q-switch), or the CO2 PWM carrier
   double pulse_width_ns = 0;    // MOPA pulse width; 0 = the source's default (any source)
+  LaserSource source = LaserSource::fiber;
 };
 
 // Refuses settings the pen's source cannot take, in one line after `where` (e.g. "pen 0: " or

@@ -392,6 +392,12 @@ void EmulatedBoard::stop_clock() {
   if (clock_.joinable()) clock_.join();
 }
 
+void EmulatedBoard::set_source(LaserSource source) {
+  std::lock_guard lock(mutex_);
+  options_.behaviour.source = source;
+  executor_.set_source(source);
+}
+
 void EmulatedBoard::set_single_fault(const SingleFault& fault) {
   std::lock_guard lock(mutex_);
   faults_.single = fault;

@@ -136,6 +136,9 @@ class EmulatedBoard : private ListFeed {
   void stop_clock();
   void advance(double seconds);
 
+  // The laser on the board's outputs from now on (the job's source).
+  void set_source(LaserSource source);
+
   // Arms a single-command fault from now on (occurrences counted from here).
   void set_single_fault(const SingleFault& fault);
 

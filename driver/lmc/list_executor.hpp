@@ -97,6 +97,10 @@ class ListExecutor {
 
   bool executing() const { return executing_; }
   const ExecutorBehaviour& behaviour() const { return behaviour_; }
+  void set_source(LaserSource source) {
+    behaviour_.source = source;
+    update_power();
+  }
   bool paused() const { return paused_; }
   bool finished() const { return finished_; }
 

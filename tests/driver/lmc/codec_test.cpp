@@ -425,7 +425,7 @@ TEST(LmcEncoder, EachSourceGetsItsOwnWords) {
   const FieldUnits units(110);
   const auto preamble = [&](LaserSource source, double khz, double pct, double ns) {
     DevicePen p = test::golden_pen();
-    p.laser = {source, pct, khz, ns};
+    p.laser = {pct, khz, ns, source};
     std::vector<Word> words;
     JobEncoder enc(units, [&](const ListPacket& pk, const PacketInfo&) {
       for (std::size_t i = 0; i < pk.used(); ++i) words.push_back(load(pk.bytes().data() + 12 * i));

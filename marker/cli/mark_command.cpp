@@ -270,18 +270,18 @@ int run_mark(const MarkArgs& a) {
   sim_settings.fault_at = inject.device_fault_at;
   sim_settings.trace = !a.trace.empty();
   sim_settings.laser_rise_s = a.head.laser_rise_us * 1e-6;
+  sim_settings.virtual_time = a.virtual_time;
   const std::unique_ptr<Device> device = open_device(a.device, spec, sim_settings, a.lmc);
-  auto* scanner = dynamic_cast<SimScanner*>(device.get());
+  SimScanner* scanner = simulated_scanner(*device);
   if (!scanner && (!a.preview.empty() || !a.dose_png.empty() || !a.trace.empty()))
-    throw InputError("--preview, --dose-png and --trace need the simulated scanner (--device sim)");
+    throw InputError("--preview, --dose-png and --trace need a simulated scanner (--device sim or lmc-emulated)");
 
   JobOptions options;
   options.virtual_time = a.virtual_time;
   options.stop = &interrupt_flag();
   options.inject = inject.drain;
   if (!a.json && isatty(STDERR_FILENO)) options.progress = progress_printer();
-  const JobResult r =
-      scanner ? run_job_simulated(spec, options, *scanner) : run_job(spec, options, *device);
+  const JobResult r = run_on_device(spec, options, *device);
   // A job stopped by Ctrl-C leaves no files: what it would show is not the part on the machine's
   // table. A failed job's files show how far it got.
   std::optional<CameraImage> picture;
@@ -377,7 +377,8 @@ Command make_mark_command() {
         modes->shared.push_back(
             sub->add_option("--device", a->device,
                             "device: sim (the simulated scanner), lmc or lmc:SERIAL (a BJJCZ board, see "
-                            "'marker devices'), lmc-capture:FILE (the board's bytes to a file); with --job "
+                            "'marker devices'), lmc-capture:FILE (the board's bytes to a file), "
+                            "lmc-emulated[:VARIANT] (the emulated board and the simulated scanner); with --job "
                             "the job's unless given")
                 ->capture_default_str());
         add_head_options(*sub, a->head, true);

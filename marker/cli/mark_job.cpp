@@ -79,6 +79,7 @@ int run_mark_job(const MarkJobArgs& a) {
 
   SimSettings sim;
   sim.fault_at = inject.device_fault_at;
+  sim.virtual_time = a.virtual_time;
   const std::unique_ptr<Device> device = open_device(
       a.device.empty() ? job.device : a.device, object_spec(job, job.objects.front(), "", fonts), sim);
 

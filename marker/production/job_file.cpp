@@ -177,7 +177,8 @@ std::string parse_device(JsonReader& top) {
     top.fail("device", e.what());
   }
   top.fail("device", "'" + *device + "' is not a device (sim: the simulated scanner; lmc, "
-                     "lmc:SERIAL, lmc-capture:FILE: a BJJCZ LMC board)");
+                     "lmc:SERIAL, lmc-capture:FILE: a BJJCZ LMC board; lmc-emulated[:VARIANT]: the "
+                     "emulated board)");
 }
 
 }  // namespace

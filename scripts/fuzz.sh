@@ -34,7 +34,8 @@ declare -A seeds=(
   [head_profile]="$root/tests/fuzz/head_profile-seeds/*.json"
 )
 # Option values and replies are short; the others are files (a .cor table is ~68 kB).
-declare -A max_len=([option_values]=64 [glyph_script]=1024 [lmc_reply]=256 [cor_file]=70000)
+# lmc_reply reaches a whole list packet (3072 bytes) for the masked link.
+declare -A max_len=([option_values]=64 [glyph_script]=1024 [lmc_reply]=3200 [cor_file]=70000)
 
 # Minimal valid inputs for the LMC readers, written into the corpus.
 lmc_seeds() {
@@ -44,6 +45,13 @@ lmc_seeds() {
   printf '\x00\x00\x01\x43\x4d\x4c\x20\x00' >"$dir/seed_reply_serial"
   printf '\x01\x80\x74\xd1\x8b\x2e\x00\x00\x31\x73\x00\x00\x05\x80\x74\xd1\xd1\x45\x00\x00\x46\x17\x00\x00' \
     >"$dir/seed_words"
+  # Device and source names; a WritePort with the laser bit, a packet opening the oscillator.
+  printf 'lmc-emulated:slowest' >"$dir/seed_device_emulated"
+  printf 'lmc:4C4D4301' >"$dir/seed_device_serial"
+  printf 'co2' >"$dir/seed_source"
+  printf '\x21\x00\x01\x01\x00\x00\x00\x00\x00\x00\x00\x00' >"$dir/seed_write_port"
+  { printf '\x51\x80\0\0\0\0\0\0\0\0\0\0\x21\x80\x01\0\0\0\0\0\0\0\0\0'; head -c $((3072 - 24)) /dev/zero; } \
+    >"$dir/seed_packet"
 }
 cor_seeds() {
   local dir=$1

@@ -15,7 +15,9 @@ const Range kChordToleranceRange{0.5, 1000, "µm"};
 
 void add_lmc_options(CLI::App& app, LmcArgs& a) {
   app.add_option("--cor", a.cor_file, "LMC: EzCad field-correction file (.cor, both formats) to upload");
-  app.add_flag("--swap-xy", a.swap_xy, "LMC: the head's x and y galvos are swapped");
+  app.add_flag("--swap-xy,!--no-swap-xy", a.swap_xy,
+               "LMC: the first coordinate word is y (EzCad's default, on); --no-swap-xy: it is x")
+      ->capture_default_str();
   app.add_flag("--flip-x", a.flip_x, "LMC: mirror x (the head's x galvo is wired reversed)");
   app.add_flag("--flip-y", a.flip_y, "LMC: mirror y");
   add_ranged_option(app, "--laser-bit", a.laser_bit, "LMC: output-port bit that enables the laser", kPortBitRange)
@@ -23,7 +25,8 @@ void add_lmc_options(CLI::App& app, LmcArgs& a) {
   add_ranged_option(app, "--red-bit", a.red_bit, "LMC: output-port bit of the red pointer", kPortBitRange)
       ->capture_default_str();
   app.add_option("--polygon-delay-units", a.polygon_unit,
-                 "LMC: PolygonDelay encoding: 10us (meerk40t since 2025) or us (galvoplotter)")
+                 "LMC: PolygonDelay encoding: us (galvoplotter, balor) or 10us (meerk40t since 2025); "
+                 "`marker lmc probe` measures which a board takes")
       ->check(CLI::IsMember({"10us", "us"}))
       ->capture_default_str();
   add_ranged_option(app, "--chord-tolerance", a.chord_tolerance_um,

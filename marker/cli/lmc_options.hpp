@@ -12,10 +12,10 @@ namespace mark::cli {
 
 struct LmcArgs {
   std::string cor_file;
-  bool swap_xy = false, flip_x = false, flip_y = false;
+  bool swap_xy = lmc::kEzCadAxes.swap_xy, flip_x = lmc::kEzCadAxes.flip_x, flip_y = lmc::kEzCadAxes.flip_y;
   int laser_bit = 0;
   int red_bit = 8;
-  std::string polygon_unit = "10us";
+  std::string polygon_unit = "us";
   double chord_tolerance_um = 5;
 };
 

@@ -39,10 +39,10 @@ SimScanner* simulated_scanner(Device& device) {
   return nullptr;
 }
 
-JobResult run_on_device(const JobSpec& spec, const JobOptions& options, Device& device) {
+JobResult run_on_device(const JobSpec& spec, CompiledJob job, const JobOptions& options, Device& device) {
   SimScanner* scanner = simulated_scanner(device);
-  if (scanner == &device) return run_job_simulated(spec, options, *scanner);
-  JobResult r = run_job(spec, options, device);
+  if (scanner == &device) return run_job_simulated(spec, std::move(job), options, *scanner);
+  JobResult r = run_compiled_job(spec, std::move(job), options, device);
   if (scanner) {
     r.quality = simulated_quality(r, *scanner);
     r.codes = verify_codes(spec, r.job, scanner->dose());

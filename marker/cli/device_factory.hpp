@@ -31,8 +31,8 @@ std::unique_ptr<Device> open_device(const std::string& spec, const JobSpec& job,
 // board (lmc-emulated), or none.
 SimScanner* simulated_scanner(Device& device);
 
-// Runs the job on the device; where a simulated scanner marks it, with the quality figures, the
+// Runs the job, compiled for the device's level, on the device; where a simulated scanner marks it, with the quality figures, the
 // pulses and every code read back off the simulated part (run_job_simulated's figures).
-JobResult run_on_device(const JobSpec& spec, const JobOptions& options, Device& device);
+JobResult run_on_device(const JobSpec& spec, CompiledJob job, const JobOptions& options, Device& device);
 
 }  // namespace mark::cli

@@ -148,10 +148,12 @@ ProbeReport probe_board(LmcLink& link, const ProbeOptions& o, const std::functio
   // The host's own share of every measurement: an empty list.
   r.latency_s = pr.run("empty list", {});
 
-  // 1. The jump delay the board holds: 400 one-tick jumps with no JumpDelay, then with 0. First,
-  //    before anything of the probe sets one.
+  // 1. The jump delay the board holds: 800 one-tick jumps with no JumpDelay, then with 0. First,
+  //    before anything of the probe sets one; the lists without a JumpDelay set nothing, so they
+  //    too can be taken three times and their median kept (one run the host was late for adds
+  //    tens of milliseconds, tens of µs a jump).
   {
-    constexpr int n = 400;
+    constexpr int n = 800;
     const auto jumps = [&](bool set) {
       std::vector<Word> w{word(Op::JumpSpeed, 10000)};
       if (set) w.push_back(word(Op::JumpDelay, 0, 0));
@@ -160,7 +162,7 @@ ProbeReport probe_board(LmcLink& link, const ProbeOptions& o, const std::functio
       for (int i = 0; i < n; ++i) w.push_back(to(Op::JumpTo, c + (i % 2 ? 0 : 100), c, at));
       return w;
     };
-    const double held = pr.run("jumps, no JumpDelay sent", jumps(false));  // once: it sets nothing
+    const double held = pr.median("jumps, no JumpDelay sent", jumps(false));
     const double zero = pr.median("jumps, JumpDelay 0", jumps(true));
     r.held_jump_delay_us = std::max(0.0, (held - zero) / n * 1e6);
   }

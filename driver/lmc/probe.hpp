@@ -79,8 +79,8 @@ struct ProbeReport {
 };
 
 inline constexpr std::size_t kMaxProbePackets = 64;
-// Below this a held jump delay is the measurement's noise (400 jumps, a list's timing to a few
-// milliseconds under load).
+// Below this a held jump delay is the measurement's noise (the median of three lists of 800
+// jumps, each list's timing to a few milliseconds under load).
 inline constexpr double kHeldJumpDelayNoise_us = 30;
 
 // Runs the probe on the board behind `link` (its init sequence included). `progress` gets a line

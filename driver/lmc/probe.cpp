@@ -146,7 +146,7 @@ ProbeReport probe_board(LmcLink& link, const ProbeOptions& o, const std::functio
   const auto home = [&] { return to(Op::JumpTo, c, c, at); };
 
   // The host's own share of every measurement: an empty list.
-  r.latency_s = pr.run("empty list", {});
+  r.latency_s = pr.median("empty list", {});
 
   // 1. The jump delay the board holds: 800 one-tick jumps with no JumpDelay, then with 0. First,
   //    before anything of the probe sets one; the lists without a JumpDelay set nothing, so they
@@ -233,8 +233,8 @@ ProbeReport probe_board(LmcLink& link, const ProbeOptions& o, const std::functio
   // 5. DelayTime: 6000 × 50 µs against 1500 × 200 µs, 300 ms each: what a word costs on top
   //    of its own time, from 4500 words' difference.
   {
-    const double many = pr.run("6000 × DelayTime 50 us", std::vector<Word>(6000, word(Op::DelayTime, 5)));
-    const double few = pr.run("1500 × DelayTime 200 us", std::vector<Word>(1500, word(Op::DelayTime, 20)));
+    const double many = pr.median("6000 × DelayTime 50 us", std::vector<Word>(6000, word(Op::DelayTime, 5)));
+    const double few = pr.median("1500 × DelayTime 200 us", std::vector<Word>(1500, word(Op::DelayTime, 20)));
     r.delay_time_extra_us = (many - few) / 4500 * 1e6;
     r.delay_time_extra_tick = r.delay_time_extra_us > 5;
   }
@@ -246,8 +246,8 @@ ProbeReport probe_board(LmcLink& link, const ProbeOptions& o, const std::functio
       with.push_back(word(Op::DelayTime, 10));
       with.push_back(word(Op::MarkSpeed, std::uint16_t(1000 + i % 2)));
     }
-    const double p1 = pr.run("3000 × (DelayTime, MarkSpeed)", with);
-    const double p0 = pr.run("3000 × DelayTime 100 us", without);
+    const double p1 = pr.median("3000 × (DelayTime, MarkSpeed)", with);
+    const double p0 = pr.median("3000 × DelayTime 100 us", without);
     r.parameter_word_us = (p1 - p0) / 3000 * 1e6;
     r.parameter_word_tick = r.parameter_word_us > 5;
   }
@@ -263,8 +263,8 @@ ProbeReport probe_board(LmcLink& link, const ProbeOptions& o, const std::functio
       w.push_back(home());
       return w;
     };
-    const double a = pr.run("3000 jumps of 10.4 ticks", jumps(52));
-    const double b = pr.run("3000 jumps of 10 ticks", jumps(50));
+    const double a = pr.median("3000 jumps of 10.4 ticks", jumps(52));
+    const double b = pr.median("3000 jumps of 10 ticks", jumps(50));
     r.move_ticks_exact = 10.4;
     r.move_ticks_measured = 10 + (a - b) / 3000 / kTick_s;
     const double extra = r.move_ticks_measured - 10;

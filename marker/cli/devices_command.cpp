@@ -6,6 +6,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "driver/laser_source.hpp"
 #include "driver/lmc/usb_discovery.hpp"
 #include "marker/cli/commands.hpp"
 

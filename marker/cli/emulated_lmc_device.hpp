@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "driver/lmc/emulated_link.hpp"
 #include "driver/lmc/lmc_device.hpp"
 #include "driver/lmc/lmc_spec.hpp"
 #include "driver/sim/sim_scanner.hpp"

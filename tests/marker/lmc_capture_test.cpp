@@ -18,21 +18,12 @@
 #include "marker/job/intended_strokes.hpp"
 #include "marker/job/job.hpp"
 #include "tests/marker/cli_runner.hpp"
+#include "tests/marker/polyline_distance.hpp"
 
 namespace mark {
 namespace {
 
-double distance_to(const std::vector<std::vector<Vec2>>& lines, Vec2 p) {
-  double best = 1e9;
-  for (const auto& l : lines)
-    for (std::size_t i = 1; i < l.size(); ++i) {
-      const Vec2 a = l[i - 1], d = l[i] - a;
-      const double len2 = dot(d, d);
-      const double t = len2 > 0 ? std::clamp(dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
-      best = std::min(best, norm(p - (a + t * d)));
-    }
-  return best;
-}
+using test::distance_to;
 
 TEST(LmcCapture, LitMarkEndPointsLieOnTheIntendedStrokes) {
   const auto path = test::fresh_temp_file("lmc_capture_test", "serial.lmc");

@@ -19,9 +19,12 @@
 #include "marker/job/intended_strokes.hpp"
 #include "marker/job/job.hpp"
 #include "tests/marker/cli_runner.hpp"
+#include "tests/marker/polyline_distance.hpp"
 
 namespace mark {
 namespace {
+
+using test::distance_to;
 
 struct Meerk40tView {
   double lens_mm = 110;
@@ -48,18 +51,6 @@ struct Meerk40tView {
     return {s[0] - lens_mm / 2, lens_mm / 2 - s[1]};
   }
 };
-
-double distance_to(const std::vector<std::vector<Vec2>>& lines, Vec2 p) {
-  double best = 1e9;
-  for (const auto& l : lines)
-    for (std::size_t i = 1; i < l.size(); ++i) {
-      const Vec2 a = l[i - 1], d = l[i] - a;
-      const double len2 = dot(d, d);
-      const double t = len2 > 0 ? std::clamp(dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
-      best = std::min(best, norm(p - (a + t * d)));
-    }
-  return best;
-}
 
 // Every lit MarkTo end point of a capture, decoded by `view`.
 std::vector<Vec2> lit_points(const std::string& capture, const Meerk40tView& view) {

@@ -39,8 +39,9 @@ TEST_P(LmcProbe, ItsConclusionsAreTheVariantsOwn) {
   EXPECT_EQ(r.move_rounding, want.behaviour.exact_move_time ? "exact" : "whole (up)");
   // The foreign registers' jump delay is 500 µs (ExecutorBehaviour::foreign_settings).
   EXPECT_NEAR(r.held_jump_delay_us, want.behaviour.foreign_settings ? 500 : 0, 50);
-  // The job's list: never faster than the estimate, and within the deadline's margin.
-  EXPECT_GE(r.list_measured_s, 0.95 * r.list_estimated_s);
+  // The job's list: never faster than the estimate (less the host's latency, itself measured
+  // to a few milliseconds), and within the deadline's margin.
+  EXPECT_GE(r.list_measured_s, 0.9 * r.list_estimated_s);
   EXPECT_LE(r.list_measured_s, 2.0 * r.list_estimated_s);
 
   // Nothing lit, and the laser bit never reached the board.

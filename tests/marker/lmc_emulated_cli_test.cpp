@@ -36,7 +36,7 @@ TEST(LmcEmulatedCli, MarkThroughTheEmulatedBoardReportsTheSimulatorsFigures) {
     // The same strokes through the board: within the chords (5 µm) and a field unit of the
     // direct path, the whole text covered.
     EXPECT_LE(q["max_deviation_um"].get<double>(), direct["quality"]["max_deviation_um"].get<double>() + 5 + 2.4);
-    EXPECT_GE(q["coverage"].get<double>(), 0.95);
+    EXPECT_GE(q["coverage_fraction"].get<double>(), 0.95);
     EXPECT_GT((*j)["device_figures"]["pulses"].get<double>(), 100);
     EXPECT_GT((*j)["device_figures"]["packets"].get<double>(), 0);
     EXPECT_FALSE(j->at("device_figures").contains("stop_confirmed"));  // nothing was stopped

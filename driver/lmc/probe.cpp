@@ -230,25 +230,26 @@ ProbeReport probe_board(LmcLink& link, const ProbeOptions& o, const std::functio
   // Lists longer than the board's buffer stream while it runs: every packet of these holds at
   // least 12 ms of board time, so a host that refills it a few milliseconds late starves nothing.
 
-  // 5. DelayTime: 6000 × 50 µs against 1500 × 200 µs, 300 ms each: what a word costs on top
-  //    of its own time, from 4500 words' difference.
+  // 5. DelayTime: 12000 × 20 µs against 1200 × 200 µs, 240 ms each: what a word costs on top
+  //    of its own time, from 10800 words' difference (a tick each would add 108 ms).
   {
-    const double many = pr.median("6000 × DelayTime 50 us", std::vector<Word>(6000, word(Op::DelayTime, 5)));
-    const double few = pr.median("1500 × DelayTime 200 us", std::vector<Word>(1500, word(Op::DelayTime, 20)));
-    r.delay_time_extra_us = (many - few) / 4500 * 1e6;
+    const double many = pr.median("12000 × DelayTime 20 us", std::vector<Word>(12000, word(Op::DelayTime, 2)));
+    const double few = pr.median("1200 × DelayTime 200 us", std::vector<Word>(1200, word(Op::DelayTime, 20)));
+    r.delay_time_extra_us = (many - few) / 10800 * 1e6;
     r.delay_time_extra_tick = r.delay_time_extra_us > 5;
   }
 
-  // 6. Parameter words: 3000 × (DelayTime 100 µs, MarkSpeed) against 3000 × DelayTime 100 µs.
+  // 6. Parameter words: 6000 × (DelayTime 50 µs, MarkSpeed) against 6000 × DelayTime 50 µs
+  //    (a tick each would add 60 ms).
   {
-    std::vector<Word> with, without(3000, word(Op::DelayTime, 10));
-    for (int i = 0; i < 3000; ++i) {
-      with.push_back(word(Op::DelayTime, 10));
+    std::vector<Word> with, without(6000, word(Op::DelayTime, 5));
+    for (int i = 0; i < 6000; ++i) {
+      with.push_back(word(Op::DelayTime, 5));
       with.push_back(word(Op::MarkSpeed, std::uint16_t(1000 + i % 2)));
     }
-    const double p1 = pr.median("3000 × (DelayTime, MarkSpeed)", with);
-    const double p0 = pr.median("3000 × DelayTime 100 us", without);
-    r.parameter_word_us = (p1 - p0) / 3000 * 1e6;
+    const double p1 = pr.median("6000 × (DelayTime, MarkSpeed)", with);
+    const double p0 = pr.median("6000 × DelayTime 50 us", without);
+    r.parameter_word_us = (p1 - p0) / 6000 * 1e6;
     r.parameter_word_tick = r.parameter_word_us > 5;
   }
 

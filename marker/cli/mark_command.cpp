@@ -267,8 +267,9 @@ int run_mark(const MarkArgs& a) {
   sim_settings.fault_at = inject.device_fault_at;
   sim_settings.trace = !a.trace.empty();
   sim_settings.laser_rise_s = a.head.laser_rise_us * 1e-6;
-  const std::unique_ptr<Device> device = open_device(a.device, spec, sim_settings, a.lmc);
-  auto* scanner = dynamic_cast<SimScanner*>(device.get());
+  const OpenedDevice opened = open_device(a.device, spec, sim_settings, a.lmc);
+  const std::unique_ptr<Device>& device = opened.device;
+  const SimScanner* scanner = opened.simulator ? &opened.simulator->scanner() : nullptr;
   if (!scanner && (!a.preview.empty() || !a.dose_png.empty() || !a.trace.empty()))
     throw InputError("--preview, --dose-png and --trace need the simulated scanner (--device sim)");
 
@@ -277,8 +278,8 @@ int run_mark(const MarkArgs& a) {
   options.stop = &interrupt_flag();
   options.inject = inject.drain;
   if (!a.json && isatty(STDERR_FILENO)) options.progress = progress_printer();
-  const JobResult r =
-      scanner ? run_job_simulated(spec, options, *scanner) : run_job(spec, options, *device);
+  options.evaluator = opened.simulator.get();
+  const JobResult r = run_job(spec, options, *device);
   // A job stopped by Ctrl-C leaves no files: what it would show is not the part on the machine's
   // table. A failed job's files show how far it got.
   std::optional<CameraImage> picture;

@@ -64,4 +64,12 @@ JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimS
   return run_job(spec, o, scanner);
 }
 
+JobResult run_job_simulated(const JobSpec& spec, CompiledJob job, const JobOptions& options,
+                            SimScanner& scanner, const QualityReference* reference) {
+  SimEvaluator evaluator(scanner, reference);
+  JobOptions o = options;
+  o.evaluator = &evaluator;
+  return run_compiled_job(spec, std::move(job), o, scanner);
+}
+
 }  // namespace mark

@@ -62,5 +62,8 @@ Quality simulated_quality(const JobResult& result, const SimScanner& scanner,
 // scanner keeps the dose for a preview.
 JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,
                             const QualityReference* reference = nullptr);
+// The same for a job compiled beforehand for a sample-level device (run_compiled_job).
+JobResult run_job_simulated(const JobSpec& spec, CompiledJob job, const JobOptions& options,
+                            SimScanner& scanner, const QualityReference* reference = nullptr);
 
 }  // namespace mark

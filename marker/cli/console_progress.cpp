@@ -1,0 +1,76 @@
+#include "marker/cli/console_progress.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+#include "marker/cli/interrupt.hpp"
+
+namespace mark::cli {
+namespace {
+
+constexpr std::int64_t kSecond_ns = 1'000'000'000;
+// After a stop request the stages get this long to stop at a step of their own; then the
+// watchdog ends the process. Together with its polling period, well inside the 100 ms a stop
+// may take.
+constexpr std::int64_t kGrace_ns = 20'000'000;
+constexpr auto kPoll = std::chrono::milliseconds(2);
+
+}  // namespace
+
+ConsoleProgress::ConsoleProgress(const StopFlag& stop, bool quiet)
+    : stop_(stop), quiet_(quiet), start_ns_(StopFlag::now_ns()), next_print_ns_(start_ns_ + kSecond_ns),
+      watchdog_([this] { watch(); }) {}
+
+ConsoleProgress::~ConsoleProgress() {
+  done_.store(true, std::memory_order_release);
+  watchdog_.join();
+}
+
+std::string ConsoleProgress::describe(std::string_view task, std::size_t done, std::size_t total) {
+  std::string s(task);
+  s += ": " + std::to_string(done);
+  if (total > 0) s += " of " + std::to_string(total);
+  return s;
+}
+
+void ConsoleProgress::step(std::string_view task, std::size_t done, std::size_t total) const {
+  std::string where = describe(task, done, total);
+  if (stop_.requested()) throw Interrupted(where);
+  const std::int64_t now = StopFlag::now_ns();
+  bool print = false;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    where_ = where;
+    if (!quiet_ && now >= next_print_ns_) {
+      next_print_ns_ = now + kSecond_ns;
+      print = true;
+    }
+  }
+  if (print) std::cerr << "marker: " << where << " (" << (now - start_ns_) / kSecond_ns << " s)\n";
+}
+
+void ConsoleProgress::writing_files() { writing_.store(true, std::memory_order_release); }
+
+void ConsoleProgress::watch() {
+  while (!done_.load(std::memory_order_acquire)) {
+    std::this_thread::sleep_for(kPoll);
+    if (!stop_.requested() || writing_.load(std::memory_order_acquire)) continue;
+    if (StopFlag::now_ns() - stop_.requested_at_ns() < kGrace_ns) continue;
+    if (done_.load(std::memory_order_acquire)) return;
+    std::string where;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      where = where_;
+    }
+    // The work is stuck in one long call: nothing has been written, so the process may end here.
+    std::fprintf(stderr, "marker: %s\n", Interrupted(where).what());
+    std::fflush(stderr);
+    std::_Exit(kExitInterrupted);
+  }
+}
+
+ConsoleProgress command_progress(bool quiet) { return ConsoleProgress(interrupt_flag(), quiet); }
+
+}  // namespace mark::cli

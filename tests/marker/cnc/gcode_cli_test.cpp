@@ -231,7 +231,7 @@ TEST(GcodeCli, FortyLineTextRunsInEveryDialect) {
   for (int k = 0; k < 40; ++k) text += (k ? "\\n" : "") + std::string("L") + std::to_string(k) + " ABCDEFGHIJKLMNOPQRSTUVWXYZ";
   for (const char* dialect : {"linuxcnc", "fanuc", "plain"}) {
     const std::string file = out_path(std::string("forty_") + dialect + ".ngc");
-    const CliResult r = run_cli({"gcode", text, "--height", "1", "--x", "-50", "--y", "50", "--field", "200",
+    const CliResult r = run_cli({"gcode", text, "--height", "1", "--x", "-50", "--y", "50",
                                  "--dialect", dialect, "-o", file, "--json"});
     ASSERT_EQ(r.code, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);

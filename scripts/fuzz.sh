@@ -4,7 +4,7 @@
 # input, if any target finds a crash, a sanitizer report, a leak or a broken invariant.
 #   scripts/fuzz.sh [SECONDS]
 # Targets: the font loaders (jhf, lff, cxf), job files, the built-in font's glyph script, the PGM
-# reader, code data (GS1, UDI, the zint wrapper), head profiles, the option-value parsers (numbers, "CX,CY,R", "WxH"), and the LMC
+# reader, code data (GS1, UDI, the zint wrapper), head profiles, the option-value parsers (numbers, "CX,CY,R", "WxH", --stock, --travel), and the LMC
 # driver's readers (lmc_reply: replies and command words; cor_file: EzCad .cor files and captures).
 set -euo pipefail
 

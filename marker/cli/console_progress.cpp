@@ -24,7 +24,11 @@ ConsoleProgress::ConsoleProgress(const StopFlag& stop, bool quiet)
       watchdog_([this] { watch(); }) {}
 
 ConsoleProgress::~ConsoleProgress() {
-  done_.store(true, std::memory_order_release);
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    done_ = true;
+  }
+  wake_.notify_all();
   watchdog_.join();
 }
 
@@ -51,19 +55,21 @@ void ConsoleProgress::step(std::string_view task, std::size_t done, std::size_t 
   if (print) std::cerr << "marker: " << where << " (" << (now - start_ns_) / kSecond_ns << " s)\n";
 }
 
-void ConsoleProgress::writing_files() { writing_.store(true, std::memory_order_release); }
+// Under the lock the watchdog holds while it decides: it either ends the process before the first
+// byte is written, or sees this and never does.
+void ConsoleProgress::writing_files() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  writing_ = true;
+}
 
 void ConsoleProgress::watch() {
-  while (!done_.load(std::memory_order_acquire)) {
-    std::this_thread::sleep_for(kPoll);
-    if (!stop_.requested() || writing_.load(std::memory_order_acquire)) continue;
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (!done_) {
+    wake_.wait_for(lock, kPoll);
+    if (done_) return;
+    if (!stop_.requested() || writing_) continue;
     if (StopFlag::now_ns() - stop_.requested_at_ns() < kGrace_ns) continue;
-    if (done_.load(std::memory_order_acquire)) return;
-    std::string where;
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      where = where_;
-    }
+    const std::string where = where_;
     // The work is stuck in one long call: nothing has been written, so the process may end here.
     std::fprintf(stderr, "marker: %s\n", Interrupted(where).what());
     std::fflush(stderr);

@@ -11,6 +11,7 @@
 //    second, unless the command was given --json or --quiet (a script reading stdout or a log
 //    wants no chatter).
 #include <atomic>
+#include <condition_variable>
 #include <cstdint>
 #include <mutex>
 #include <string>
@@ -48,8 +49,9 @@ class ConsoleProgress final : public Progress {
   mutable std::int64_t next_print_ns_;
   mutable std::mutex mutex_;
   mutable std::string where_ = "starting";  // the last step, for the watchdog's message
-  std::atomic<bool> done_{false};
-  std::atomic<bool> writing_{false};
+  std::condition_variable wake_;             // the command is done: the watchdog need not wait out its poll
+  bool done_ = false;                        // under mutex_
+  bool writing_ = false;                     // under mutex_
   std::thread watchdog_;
 };
 

@@ -209,7 +209,7 @@ int run_gcode(GcodeArgs& a) {
   if (!a.cleanup_output.empty()) write_file_whole(a.cleanup_output, cleanup_program);
   if (!a.preview.empty())
     write_toolpath_preview(laid.figure, tp, a.cut.tool_diameter_mm, protrusion ? &res : nullptr, a.preview,
-                           footprint.v_half_angle_rad);
+                           vcarve ? &carve : nullptr);
 
   const RapidTravel travel = rapid_travel(tp);
   out["lines"] = st.lines;

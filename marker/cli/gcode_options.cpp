@@ -1,13 +1,12 @@
 #include "marker/cli/gcode_options.hpp"
 
-#include <algorithm>
+#include <tuple>
 
 #include "fonts/error.hpp"
 #include "marker/cli/option_ranges.hpp"
-#include "marker/cli/option_values.hpp"
+#include "marker/cli/machine_values.hpp"
 #include "marker/cli/tool_measure_report.hpp"
 #include "marker/limits/cnc_limits.hpp"
-#include "marker/limits/layout_limits.hpp"
 
 namespace mark::cli {
 namespace {
@@ -27,26 +26,6 @@ const Range kMarginRange{0.01, 1000, "mm", false, true};
 const Range kStepoverRange{0.001, 25, "mm", false, true};
 // Pocket loops closer than 5 % of the tool diameter only multiply the cutting time.
 constexpr double kMinStepoverShare = 0.05;
-
-// "W,H" (lower-left corner at the work origin) or "X,Y,W,H" (lower-left corner at X,Y).
-Box parse_stock(const std::string& text) {
-  const std::size_t commas = static_cast<std::size_t>(std::count(text.begin(), text.end(), ','));
-  const std::vector<double> v = parse_numbers("--stock", text, ",", commas == 3 ? 4 : 2,
-                                              "W,H or X,Y,W,H in millimetres (lower-left corner at 0,0 or at X,Y)");
-  const std::string option = "--stock '" + text + "'";
-  const double x = v.size() == 4 ? v[0] : 0, y = v.size() == 4 ? v[1] : 0;
-  const double w = v[v.size() - 2], h = v[v.size() - 1];
-  if (v.size() == 4) {
-    check_range(option + " corner x", x, kPositionRange);
-    check_range(option + " corner y", y, kPositionRange);
-  }
-  check_range(option + " width", w, kStockSizeRange);
-  check_range(option + " height", h, kStockSizeRange);
-  Box b;
-  b.add(Point(x, y));
-  b.add(Point(x + w, y + h));
-  return b;
-}
 
 }  // namespace
 
@@ -176,13 +155,7 @@ VCarveSettings vcarve_settings(const GcodeArgs& a) {
 MachineEnvelope machine_envelope(const GcodeArgs& a) {
   MachineEnvelope env;
   if (!a.stock.empty()) env.stock = parse_stock(a.stock);
-  if (!a.travel.empty()) {
-    const std::vector<double> v = parse_numbers("--travel", a.travel, ",", 2, "X,Y in millimetres");
-    check_range("--travel '" + a.travel + "' x", v[0], kTravelRange);
-    check_range("--travel '" + a.travel + "' y", v[1], kTravelRange);
-    env.travel_x_mm = v[0];
-    env.travel_y_mm = v[1];
-  }
+  if (!a.travel.empty()) std::tie(env.travel_x_mm, env.travel_y_mm) = parse_travel(a.travel);
   return env;
 }
 

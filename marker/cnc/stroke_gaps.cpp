@@ -19,8 +19,12 @@ using RPoint = bg::model::point<double, 2, bg::cs::cartesian>;
 using RBox = bg::model::box<RPoint>;
 
 constexpr double kFlattenFraction = 1e-3;  // of the letter height
-// Facing: the line between the points within 30° of square to the stroke.
-const double kMaxSquareCos = std::sin(30 * std::numbers::pi / 180);
+// Closer than this share of the letter height two strokes touch: fonts draw T-junctions that miss
+// the crossbar by up to 9e-4 of the height (QCAD's normal.cxf), which no tool can see.
+constexpr double kTouchFraction = 5e-3;
+// First-order slack of the local-minimum test (≈ 6°): flattened curves put the true minimum
+// between vertices.
+constexpr double kSlack = 0.1;
 // Two points of one stroke whose way along it is shorter than this many times their distance
 // are neighbours on the stroke (a bend, a corner), not a gap across it. The sides of an 'O' are
 // π/2 ≈ 1.57 times their distance apart along it.
@@ -72,18 +76,19 @@ void closest_params(const Point& p0, const Point& p1, const Point& q0, const Poi
   }
 }
 
-// Whether the line from the point at parameter u of `seg` towards `other` leaves the stroke
-// squarely (or from a free end).
-bool faces(const Seg& seg, double u, const Point& here, const Point& other) {
-  const Point toward = other - here;
-  const double len = toward.norm();
-  if (len <= 0) return false;
-  const Point w = toward / len;
-  const auto square_to = [&](const Point& dir) { return dir.norm() > 0 && std::abs(w.dot(dir)) <= kMaxSquareCos; };
-  const Point along = (seg.b - seg.a).normalized();
-  if (u > 0 && u < 1) return true;  // the closest point inside a segment is square to it
-  if (u <= 0) return seg.free_a || square_to(along) || square_to(seg.dir_before_a);
-  return seg.free_b || square_to(along) || square_to(seg.dir_after_b);
+// Whether the point at parameter u of `seg` is a local minimum of the distance to `other` along
+// its stroke: moving either way along the stroke (one way at a free end) brings it no closer, to
+// first order and within kSlack. Inside a segment the closest point always is. Where two strokes
+// touch tangentially (a 'B' bowl leaving its crossbar) the distance shrinks towards the contact,
+// so the narrow wedge there is no gap.
+bool local_min(const Seg& seg, double u, const Point& here, const Point& other) {
+  if (u > 0 && u < 1) return true;
+  const Point away = here - other;
+  const double len = away.norm();
+  const auto not_closer = [&](const Point& dir) { return dir.norm() == 0 || away.dot(dir.normalized()) >= -kSlack * len; };
+  const Point fwd = seg.b - seg.a;
+  if (u <= 0) return not_closer(fwd) && (seg.free_a || not_closer(-seg.dir_before_a));
+  return not_closer(-fwd) && (seg.free_b || not_closer(seg.dir_after_b));
 }
 
 }  // namespace
@@ -92,6 +97,7 @@ std::optional<StrokeGap> narrowest_stroke_gap(const Figure& figure, double up_to
   const double join_tol = figure.join_tolerance_mm();
   const double height = figure.letter_height_mm > 0 ? figure.letter_height_mm : figure.bounds().height();
   const double flat_tol = std::max(kFlattenFraction * height, 1e-6);
+  const double touch = std::max(kTouchFraction * height, join_tol);
 
   std::vector<Seg> segs;
   std::vector<StrokeInfo> strokes;
@@ -160,14 +166,14 @@ std::optional<StrokeGap> narrowest_stroke_gap(const Figure& figure, double up_to
       closest_params(p.a, p.b, q.a, q.b, u, v);
       const Point x = p.a + u * (p.b - p.a), y = q.a + v * (q.b - q.a);
       const double d = (x - y).norm();
-      if (d <= join_tol || d > limit) continue;
+      if (d <= touch || d > limit) continue;
       if (p.stroke == q.stroke) {
         const StrokeInfo& st = strokes[p.stroke];
         double along = std::abs((q.s0 + v * (q.b - q.a).norm()) - (p.s0 + u * (p.b - p.a).norm()));
         if (st.closed) along = std::min(along, st.length - along);
         if (along < kSameStrokeDetour * d) continue;
       }
-      if (!faces(p, u, x, y) || !faces(q, v, y, x)) continue;
+      if (!local_min(p, u, x, y) || !local_min(q, v, y, x)) continue;
       limit = d;
       best = StrokeGap{d, x, y};
     }

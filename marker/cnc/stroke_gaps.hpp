@@ -4,10 +4,12 @@
 // without a word).
 //
 // A gap is a pair of points on the strokes (different strokes, different letters, or two parts
-// of one stroke such as the sides of an 'O'), farther apart than the join tolerance, that face
-// each other: at each point the line to the other is square to the stroke (within 30°), or the
-// point is a free end of a stroke (the tip of an 'i' stem under its dot). Strokes that meet or
-// cross are not a gap, nor are the two arms of a 'V' near its apex (they touch).
+// of one stroke such as the sides of an 'O') where the distance between the strokes has a local
+// minimum: moving either point along its stroke brings them no closer (at a free end, such as
+// the tip of an 'i' stem under its dot, only inwards). Strokes that meet or cross are not a gap,
+// nor is the wedge where two strokes touch tangentially or the arms of a 'V' near its apex, nor
+// are points closer than 0.5 % of the letter height (a T-junction that misses its crossbar by a
+// rounding).
 #include <optional>
 
 #include "base/progress.hpp"

@@ -21,13 +21,14 @@ Rgb depth_shade(double fraction) {
   return {v, v, v};
 }
 
-std::vector<LegendEntry> legend(const ProtrusionResult* prot, bool vcarve, double deepest_mm) {
+std::vector<LegendEntry> legend(const ProtrusionResult* prot, const VCarveResult* vcarve, double deepest_mm) {
   std::vector<LegendEntry> l;
   if (vcarve) {
     l.push_back({"v-carve, shallow", depth_shade(0.1), LegendMark::area});
     char deep[64];
     std::snprintf(deep, sizeof deep, "v-carve, %.3f mm deep", deepest_mm);
     l.push_back({deep, depth_shade(1), LegendMark::area});
+    if (vcarve->flat_area_mm2 > 0) l.push_back({"flat bottom (end mill)", kCleared, LegendMark::area});
   } else if (prot) {
     l.push_back({"stock plate", kStock, LegendMark::area});
     l.push_back({"cleared pocket", kCleared, LegendMark::area});
@@ -118,9 +119,8 @@ void draw_carve(cairo_t* cr, const std::vector<ToolMove>& moves, double tan_half
 }
 
 void write_toolpath_preview(const Figure& figure, const Toolpath& toolpath, double tool_diameter_mm,
-                            const ProtrusionResult* prot, const std::string& path, double v_half_angle_rad) {
+                            const ProtrusionResult* prot, const std::string& path, const VCarveResult* vcarve) {
   const std::vector<ToolMove> moves = expand_moves(toolpath);
-  const bool vcarve = v_half_angle_rad > 0;
   Box view = figure.bounds();
   if (prot) view.add(prot->plate);
   for (const ToolMove& m : moves) view.add(Point(m.end.x(), m.end.y()));
@@ -131,7 +131,18 @@ void write_toolpath_preview(const Figure& figure, const Toolpath& toolpath, doub
   for (const ToolMove& m : moves) deepest = std::min(deepest, m.end.z());
   Canvas canvas(path, view, kWidthPx / std::max(view.width(), 1e-3), legend(prot, vcarve, -deepest));
   cairo_t* cr = canvas.cr();
-  if (vcarve) draw_carve(cr, moves, std::tan(v_half_angle_rad), -deepest);
+  if (vcarve) {
+    draw_carve(cr, moves, std::tan(vcarve->half_angle_rad), -deepest);
+    // Flat bottoms of every occurrence, on top of the carve that surrounds them.
+    for (const ToolStep& st : toolpath.steps)
+      if (const auto* call = std::get_if<SubprogramCall>(&st)) {
+        ClipperLib::Paths placed = vcarve->letters[call->sub].flat;
+        const Affine place = Eigen::Translation2d(call->origin) * Eigen::Rotation2Dd(call->rotation_rad);
+        for (ClipperLib::Path& ring : placed)
+          for (ClipperLib::IntPoint& q : ring) q = to_nm(place * to_mm(q));
+        fill_paths(cr, placed, kCleared);
+      }
+  }
 
   if (prot) {
     cairo_rectangle(cr, prot->plate.min.x(), prot->plate.min.y(), prot->plate.width(), prot->plate.height());

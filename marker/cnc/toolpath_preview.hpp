@@ -7,15 +7,16 @@
 
 #include "marker/cnc/protrusion.hpp"
 #include "marker/cnc/toolpath.hpp"
+#include "marker/cnc/vcarve.hpp"
 #include "marker/layout/figure.hpp"
 
 namespace mark {
 
-// `protrusion` is null for a depression or V-carve toolpath; `v_half_angle_rad` > 0 marks a
-// V-carve (half the bit angle). Throws InputError naming the file when it cannot be written or
-// its extension is not .svg/.png.
+// `protrusion` and `vcarve` are null unless the toolpath is theirs; a V-carve also shows its
+// flat bottoms (what the end mill clears). Throws InputError naming the file when it cannot be
+// written or its extension is not .svg/.png.
 void write_toolpath_preview(const Figure& figure, const Toolpath& toolpath, double tool_diameter_mm,
                             const ProtrusionResult* protrusion, const std::string& path,
-                            double v_half_angle_rad = 0);
+                            const VCarveResult* vcarve = nullptr);
 
 }  // namespace mark

@@ -196,7 +196,9 @@ VCarveResult vcarve_toolpath(const Figure& figure, const CutSettings& cut, const
   // The bit's radius at the surface cannot exceed its own radius.
   const double bit_limit = cut.tool_diameter_mm / 2 / tan_half;
   res.depth_limit_mm = v.max_depth_mm > 0 ? std::min(v.max_depth_mm, bit_limit) : bit_limit;
-  const std::vector<double> floors = pass_floors(res.depth_limit_mm, cut.depth_per_pass_mm);
+  // The clean-up mills the flat bottoms, at the cap, in passes; each letter's carve goes down in
+  // passes to its own deepest point.
+  const std::vector<double> cleanup_floors = pass_floors(res.depth_limit_mm, cut.depth_per_pass_mm);
   const double join_tol = figure.join_tolerance_mm();
   const Carver carver(v, res.depth_limit_mm);
 
@@ -218,9 +220,10 @@ VCarveResult vcarve_toolpath(const Figure& figure, const CutSettings& cut, const
     res.deepest_mm = std::max(res.deepest_mm, lc.deepest_mm);
     const std::string label = describe_code_point(shape.code_point);
     Point entry(0, 0), exit(0, 0);
+    const std::vector<double> floors = pass_floors(std::max(lc.deepest_mm, 1e-6), cut.depth_per_pass_mm);
     res.toolpath.subs.push_back(carve_subprogram(lc, cut, floors, label, entry, exit));
     if (v.flat_bottom_mm > 0)
-      res.cleanup.subs.push_back(cleanup_subprogram(lc, cut, floors, v.flat_bottom_mm, label + " clean-up"));
+      res.cleanup.subs.push_back(cleanup_subprogram(lc, cut, cleanup_floors, v.flat_bottom_mm, label + " clean-up"));
     entries.push_back(entry);
     exits.push_back(exit);
     letter_of_shape[g.shape] = cuts.size();

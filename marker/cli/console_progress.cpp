@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <iostream>
 
 #include "marker/cli/interrupt.hpp"
 
@@ -42,17 +41,9 @@ std::string ConsoleProgress::describe(std::string_view task, std::size_t done, s
 void ConsoleProgress::step(std::string_view task, std::size_t done, std::size_t total) const {
   std::string where = describe(task, done, total);
   if (stop_.requested()) throw Interrupted(where);
-  const std::int64_t now = StopFlag::now_ns();
-  bool print = false;
-  {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    where_ = where;
-    if (!quiet_ && now >= next_print_ns_) {
-      next_print_ns_ = now + kSecond_ns;
-      print = true;
-    }
-  }
-  if (print) std::cerr << "marker: " << where << " (" << (now - start_ns_) / kSecond_ns << " s)\n";
+  const std::lock_guard<std::mutex> lock(mutex_);
+  where_ = std::move(where);
+  reported_ = true;
 }
 
 // Under the lock the watchdog holds while it decides: it either ends the process before the first
@@ -62,11 +53,18 @@ void ConsoleProgress::writing_files() {
   writing_ = true;
 }
 
+// The watchdog also prints the progress lines: the last step the work reported, once a second,
+// so a long call that cannot report (a Clipper offset) still shows where the command is.
 void ConsoleProgress::watch() {
   std::unique_lock<std::mutex> lock(mutex_);
   while (!done_) {
     wake_.wait_for(lock, kPoll);
     if (done_) return;
+    const std::int64_t now = StopFlag::now_ns();
+    if (!quiet_ && !writing_ && reported_ && now >= next_print_ns_) {
+      next_print_ns_ = now + kSecond_ns;
+      std::fprintf(stderr, "marker: %s (%lld s)\n", where_.c_str(), static_cast<long long>((now - start_ns_) / kSecond_ns));
+    }
     if (!stop_.requested() || writing_) continue;
     if (StopFlag::now_ns() - stop_.requested_at_ns() < kGrace_ns) continue;
     const std::string where = where_;

@@ -7,9 +7,10 @@
 //    watchdog thread ends the process itself 20 ms after the request (exit 130, the same
 //    message), unless the command has begun writing its files: files are only written after all
 //    the work (atomically, marker/output), so before that moment nothing is half-written.
-//  * Progress: once the work has run for a second, where it is goes to stderr, at most once a
-//    second, unless the command was given --json or --quiet (a script reading stdout or a log
-//    wants no chatter).
+//  * Progress: once the work has run for a second and a stage has reported a step, the watchdog
+//    prints the last step on stderr, once a second (also while one long call runs), until the
+//    files are written; not with --json or --quiet (a script reading stdout or a log wants no
+//    chatter), and not before the first step (a refusal of the options stays one line).
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -46,9 +47,12 @@ class ConsoleProgress final : public Progress {
   const StopFlag& stop_;
   bool quiet_;
   std::int64_t start_ns_;
-  mutable std::int64_t next_print_ns_;
+  std::int64_t next_print_ns_;               // under mutex_
   mutable std::mutex mutex_;
-  mutable std::string where_ = "starting";  // the last step, for the watchdog's message
+  mutable std::string where_ = "opening the font and laying out the text";  // the last step reported
+  // No progress line before a stage has reported: what runs before (options, the font) may
+  // still end in a one-line refusal, which stays one line.
+  mutable bool reported_ = false;
   std::condition_variable wake_;             // the command is done: the watchdog need not wait out its poll
   bool done_ = false;                        // under mutex_
   bool writing_ = false;                     // under mutex_

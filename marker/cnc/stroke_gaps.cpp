@@ -5,8 +5,8 @@
 #include <boost/geometry/index/rtree.hpp>
 #include <cmath>
 #include <iterator>
-#include <numbers>
 
+#include "fonts/overloaded.hpp"
 #include "fonts/stroke_join.hpp"
 #include "marker/cnc/flatten.hpp"
 
@@ -22,9 +22,23 @@ constexpr double kFlattenFraction = 1e-3;  // of the letter height
 // Closer than this share of the letter height two strokes touch: fonts draw T-junctions that miss
 // the crossbar by up to 9e-4 of the height (QCAD's normal.cxf), which no tool can see.
 constexpr double kTouchFraction = 5e-3;
-// First-order slack of the local-minimum test (≈ 6°): flattened curves put the true minimum
-// between vertices.
-constexpr double kSlack = 0.1;
+// Square within 5°; curves are flattened in steps of at most 8°, so the bisector of a vertex's
+// two segments is the curve's tangent there to well within that.
+const double kSquareSin = std::sin(5 * M_PI / 180);
+constexpr double kMaxStepShare = 0.0024;  // 1 − cos 4°: the chord tolerance for 8° steps, × radius
+
+// The chord tolerance for one element: the search's, or finer on tight curves so that no step
+// turns more than 8°.
+double chord_tolerance(const Element& e, double tol) {
+  return std::visit(Overloaded{[&](const Line&) { return tol; },
+                               [&](const CircularArc& a) { return std::min(tol, kMaxStepShare * a.radius); },
+                               [&](const EllipticalArc& el) {
+                                 // The tightest curvature of an ellipse: b²/a.
+                                 const double lo = std::min(el.rx, el.ry), hi = std::max(el.rx, el.ry);
+                                 return std::min(tol, kMaxStepShare * lo * lo / std::max(hi, 1e-300));
+                               }},
+                    e.geometry());
+}
 // Two points of one stroke whose way along it is shorter than this many times their distance
 // are neighbours on the stroke (a bend, a corner), not a gap across it. The sides of an 'O' are
 // π/2 ≈ 1.57 times their distance apart along it.
@@ -76,19 +90,28 @@ void closest_params(const Point& p0, const Point& p1, const Point& q0, const Poi
   }
 }
 
-// Whether the point at parameter u of `seg` is a local minimum of the distance to `other` along
-// its stroke: moving either way along the stroke (one way at a free end) brings it no closer, to
-// first order and within kSlack. Inside a segment the closest point always is. Where two strokes
-// touch tangentially (a 'B' bowl leaving its crossbar) the distance shrinks towards the contact,
-// so the narrow wedge there is no gap.
-bool local_min(const Seg& seg, double u, const Point& here, const Point& other) {
+// Whether the point at parameter u of `seg` faces `other` across a gap: the line between them
+// leaves the stroke squarely — inside a segment the closest point always does; at a vertex of
+// a flattened curve, square (within 5°) to the curve's tangent there (the bisector of its two
+// segments); at a corner, within its normal cone (moving along either segment brings it no
+// closer); at a free end, moving inwards brings it no closer. Square covers the sides of an 'O'
+// (across its diameter the distance is largest, not least); the 5° keeps out the wedge where
+// two strokes touch tangentially (a 'B' bowl leaving its crossbar), whose pairs are square only
+// where they are closer than the touching distance.
+bool faces(const Seg& seg, double u, const Point& here, const Point& other) {
   if (u > 0 && u < 1) return true;
   const Point away = here - other;
   const double len = away.norm();
-  const auto not_closer = [&](const Point& dir) { return dir.norm() == 0 || away.dot(dir.normalized()) >= -kSlack * len; };
-  const Point fwd = seg.b - seg.a;
-  if (u <= 0) return not_closer(fwd) && (seg.free_a || not_closer(-seg.dir_before_a));
-  return not_closer(-fwd) && (seg.free_b || not_closer(seg.dir_after_b));
+  if (len <= 0) return false;
+  const Point fwd = (seg.b - seg.a).normalized();
+  const Point inward = u <= 0 ? fwd : Point(-fwd);
+  const bool free_end = u <= 0 ? seg.free_a : seg.free_b;
+  const Point outward = u <= 0 ? Point(-seg.dir_before_a) : seg.dir_after_b;
+  const auto not_closer = [&](const Point& dir) { return dir.norm() == 0 || away.dot(dir) >= 0; };
+  if (free_end) return not_closer(inward);
+  if (not_closer(inward) && not_closer(outward)) return true;
+  const Point tangent = (fwd + (u <= 0 ? seg.dir_before_a : seg.dir_after_b)).normalized();
+  return std::abs(away.dot(tangent)) <= kSquareSin * len;
 }
 
 }  // namespace
@@ -108,7 +131,7 @@ std::optional<StrokeGap> narrowest_stroke_gap(const Figure& figure, double up_to
       info.closed = st.closed(join_tol);
       std::vector<Point> pts;
       for (const Element& e : st.elements) {
-        const std::vector<Point> piece = flatten_element(e, flat_tol);
+        const std::vector<Point> piece = flatten_element(e, std::max(chord_tolerance(e, flat_tol), 1e-9));
         pts.insert(pts.end(), pts.empty() ? piece.begin() : piece.begin() + 1, piece.end());
       }
       const std::size_t first = segs.size();
@@ -173,7 +196,7 @@ std::optional<StrokeGap> narrowest_stroke_gap(const Figure& figure, double up_to
         if (st.closed) along = std::min(along, st.length - along);
         if (along < kSameStrokeDetour * d) continue;
       }
-      if (!local_min(p, u, x, y) || !local_min(q, v, y, x)) continue;
+      if (!faces(p, u, x, y) || !faces(q, v, y, x)) continue;
       limit = d;
       best = StrokeGap{d, x, y};
     }

@@ -4,12 +4,12 @@
 // without a word).
 //
 // A gap is a pair of points on the strokes (different strokes, different letters, or two parts
-// of one stroke such as the sides of an 'O') where the distance between the strokes has a local
-// minimum: moving either point along its stroke brings them no closer (at a free end, such as
-// the tip of an 'i' stem under its dot, only inwards). Strokes that meet or cross are not a gap,
-// nor is the wedge where two strokes touch tangentially or the arms of a 'V' near its apex, nor
-// are points closer than 0.5 % of the letter height (a T-junction that misses its crossbar by a
-// rounding).
+// of one stroke such as the sides of an 'O') that face each other: the line between them is
+// square to both strokes (within 5°), or ends in a corner within its normal cone, or in a free
+// end that it leaves inwards-away (the tip of an 'i' stem under its dot). Strokes that meet or
+// cross are not a gap, nor is the wedge where two strokes touch tangentially or the arms of a
+// 'V' near its apex, nor are points closer than 0.5 % of the letter height (a T-junction that
+// misses its crossbar by a rounding).
 #include <optional>
 
 #include "base/progress.hpp"

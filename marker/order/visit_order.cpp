@@ -35,7 +35,7 @@ constexpr double kGainEps = 1e-9;  // mm: smaller gains are rounding, not improv
 // letter by letter, so its neighbours in space are its neighbours in the tour: 24 covers a few
 // letters' strokes either way. Wider windows bought < 0.5 % on 40 rows of text.
 constexpr std::size_t kWindow = 24;
-constexpr int kMaxSweeps = 20;
+constexpr int kMaxSweeps = 50;
 constexpr std::size_t kProgressEvery = 512;
 
 const Point& entry_of(const VisitItem& it, bool rev) { return rev ? it.entry_reversed : it.entry; }
@@ -43,97 +43,112 @@ const Point& exit_of(const VisitItem& it, bool rev) { return rev ? it.exit_rever
 
 RPoint rpoint(const Point& p) { return RPoint(p.x(), p.y()); }
 
+// The tour under improvement. Positions are looked at again only where a move changed the
+// tour nearby ("don't look" bits): a sweep over a long text that finds a few gains costs a few
+// windows, not the whole tour again.
 class Tour {
  public:
   Tour(const std::vector<VisitItem>& items, const Point& start, std::vector<VisitStep> order,
        const Progress& progress)
-      : items_(items), start_(start), s_(std::move(order)), progress_(progress) {}
+      : items_(items), start_(start), s_(std::move(order)), dirty_(s_.size(), true), progress_(progress) {}
 
   std::vector<VisitStep>& steps() { return s_; }
 
-  bool two_opt_sweep() {
+  // Improves until no move helps at any position (at most kMaxSweeps passes over the dirty ones).
+  void improve() {
     const std::size_t n = s_.size();
-    bool improved = false;
-    for (std::size_t i = 0; i + 1 < n; ++i) {
-      if (i % kProgressEvery == 0) progress_.step("ordering: shortening the tour", i, n);
-      if (!items_[s_[i].item].reversible) continue;
-      const Point before = exit_before(i);
-      // Links inside the run s[i..j], forwards and with the run reversed, grown with j.
-      double inner_fwd = 0, inner_bwd = 0;
-      for (std::size_t j = i + 1; j < n && j <= i + kWindow; ++j) {
-        if (!items_[s_[j].item].reversible) break;  // the run would contain an item that cannot reverse
-        inner_fwd += link(exit_at(s_[j - 1]), s_[j]);
-        inner_bwd += link(exit_at(flip(s_[j])), flip(s_[j - 1]));
-        double old_cost = link(before, s_[i]) + inner_fwd;
-        double new_cost = link(before, flip(s_[j])) + inner_bwd;
-        if (j + 1 < n) {
-          old_cost += link(exit_at(s_[j]), s_[j + 1]);
-          new_cost += link(exit_at(flip(s_[i])), s_[j + 1]);
-        }
-        if (new_cost < old_cost - kGainEps) {
-          std::reverse(s_.begin() + static_cast<std::ptrdiff_t>(i), s_.begin() + static_cast<std::ptrdiff_t>(j) + 1);
-          for (std::size_t k = i; k <= j; ++k) s_[k].reversed = !s_[k].reversed;
-          improved = true;
-          // s[i] changed: its runs are costed afresh.
-          inner_fwd = inner_bwd = 0;
-          for (std::size_t k = i + 1; k <= j; ++k) {
-            inner_fwd += link(exit_at(s_[k - 1]), s_[k]);
-            inner_bwd += link(exit_at(flip(s_[k])), flip(s_[k - 1]));
-          }
-        }
+    for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {
+      bool any = false;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (i % kProgressEvery == 0) progress_.step("ordering: shortening the tour", i, n);
+        if (!dirty_[i]) continue;
+        dirty_[i] = false;
+        if (two_opt_at(i) || relocate_at(i)) any = true;
       }
+      if (!any) return;
     }
-    return improved;
-  }
-
-  // Moves one item (optionally reversed) to the best gap within the window around it.
-  bool relocate_sweep() {
-    const std::size_t n = s_.size();
-    bool improved = false;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i % kProgressEvery == 0) progress_.step("ordering: moving strokes", i, n);
-      const VisitStep si = s_[i];
-      const Point before = exit_before(i);
-      double removal_gain = link(before, si);
-      if (i + 1 < n) removal_gain += link(exit_at(si), s_[i + 1]) - link(before, s_[i + 1]);
-      // Gap g of the tour without item i sits before its remaining position g; positions of the
-      // remaining tour are those of s_ with i skipped.
-      const auto rest = [&](std::size_t g) -> const VisitStep& { return s_[g < i ? g : g + 1]; };
-      const std::size_t lo = i > kWindow ? i - kWindow : 0;
-      const std::size_t hi = std::min(n - 1, i + kWindow);
-      double best = removal_gain - kGainEps;
-      std::size_t best_gap = n;
-      bool best_rev = false;
-      for (std::size_t g = lo; g <= hi; ++g) {
-        const Point from = g == 0 ? start_ : exit_at(rest(g - 1));
-        for (bool rev : {false, true}) {
-          if (rev && !items_[si.item].reversible) continue;
-          if (g == i && !rev) continue;  // back where it came from: no move (reversed in place is one)
-          const VisitStep c{si.item, rev ? !si.reversed : si.reversed};
-          double cost = link(from, c);
-          if (g < n - 1) cost += link(exit_at(c), rest(g)) - link(from, rest(g));
-          if (cost < best) {
-            best = cost;
-            best_gap = g;
-            best_rev = rev;
-          }
-        }
-      }
-      if (best_gap == n) continue;
-      const VisitStep moved{si.item, best_rev ? !si.reversed : si.reversed};
-      // Gap g of the remaining tour is position g of the new tour.
-      const auto at = [&](std::size_t k) { return s_.begin() + static_cast<std::ptrdiff_t>(k); };
-      if (best_gap < i)
-        std::rotate(at(best_gap), at(i), at(i + 1));
-      else
-        std::rotate(at(i), at(i + 1), at(best_gap + 1));
-      s_[best_gap] = moved;
-      improved = true;
-    }
-    return improved;
   }
 
  private:
+  // Reverses a run s[i..j] of reversible items (the best such run within the window) if that
+  // shortens the tour.
+  bool two_opt_at(std::size_t i) {
+    const std::size_t n = s_.size();
+    if (i + 1 >= n || !items_[s_[i].item].reversible) return false;
+    const Point before = exit_before(i);
+    // Links inside the run s[i..j], forwards and with the run reversed, grown with j.
+    double inner_fwd = 0, inner_bwd = 0;
+    for (std::size_t j = i + 1; j < n && j <= i + kWindow; ++j) {
+      if (!items_[s_[j].item].reversible) break;  // the run would contain an item that cannot reverse
+      inner_fwd += link(exit_at(s_[j - 1]), s_[j]);
+      inner_bwd += link(exit_at(flip(s_[j])), flip(s_[j - 1]));
+      double old_cost = link(before, s_[i]) + inner_fwd;
+      double new_cost = link(before, flip(s_[j])) + inner_bwd;
+      if (j + 1 < n) {
+        old_cost += link(exit_at(s_[j]), s_[j + 1]);
+        new_cost += link(exit_at(flip(s_[i])), s_[j + 1]);
+      }
+      if (new_cost < old_cost - kGainEps) {
+        std::reverse(s_.begin() + static_cast<std::ptrdiff_t>(i), s_.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+        for (std::size_t k = i; k <= j; ++k) s_[k].reversed = !s_[k].reversed;
+        touched(i, j);
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // Moves the item at i (optionally reversed, or reversed in place) to the best gap within the
+  // window around it, if that shortens the tour.
+  bool relocate_at(std::size_t i) {
+    const std::size_t n = s_.size();
+    const VisitStep si = s_[i];
+    const Point before = exit_before(i);
+    double removal_gain = link(before, si);
+    if (i + 1 < n) removal_gain += link(exit_at(si), s_[i + 1]) - link(before, s_[i + 1]);
+    // Gap g of the tour without item i sits before its remaining position g; positions of the
+    // remaining tour are those of s_ with i skipped.
+    const auto rest = [&](std::size_t g) -> const VisitStep& { return s_[g < i ? g : g + 1]; };
+    const std::size_t lo = i > kWindow ? i - kWindow : 0;
+    const std::size_t hi = std::min(n - 1, i + kWindow);
+    double best = removal_gain - kGainEps;
+    std::size_t best_gap = n;
+    bool best_rev = false;
+    for (std::size_t g = lo; g <= hi; ++g) {
+      const Point from = g == 0 ? start_ : exit_at(rest(g - 1));
+      for (bool rev : {false, true}) {
+        if (rev && !items_[si.item].reversible) continue;
+        if (g == i && !rev) continue;  // back where it came from: no move (reversed in place is one)
+        const VisitStep c{si.item, rev ? !si.reversed : si.reversed};
+        double cost = link(from, c);
+        if (g < n - 1) cost += link(exit_at(c), rest(g)) - link(from, rest(g));
+        if (cost < best) {
+          best = cost;
+          best_gap = g;
+          best_rev = rev;
+        }
+      }
+    }
+    if (best_gap == n) return false;
+    const VisitStep moved{si.item, best_rev ? !si.reversed : si.reversed};
+    // Gap g of the remaining tour is position g of the new tour.
+    const auto at = [&](std::size_t k) { return s_.begin() + static_cast<std::ptrdiff_t>(k); };
+    if (best_gap < i)
+      std::rotate(at(best_gap), at(i), at(i + 1));
+    else
+      std::rotate(at(i), at(i + 1), at(best_gap + 1));
+    s_[best_gap] = moved;
+    touched(std::min(i, best_gap), std::max(i, best_gap));
+    return true;
+  }
+
+  // Positions [a, b] changed: everything within a window of them may have a move again.
+  void touched(std::size_t a, std::size_t b) {
+    const std::size_t lo = a > kWindow + 1 ? a - kWindow - 1 : 0;
+    const std::size_t hi = std::min(s_.size() - 1, b + kWindow + 1);
+    for (std::size_t k = lo; k <= hi; ++k) dirty_[k] = true;
+  }
+
   static VisitStep flip(const VisitStep& s) { return {s.item, !s.reversed}; }
   // Exit point before position k (the start point before position 0).
   Point exit_before(std::size_t k) const { return k == 0 ? start_ : exit_at(s_[k - 1]); }
@@ -145,6 +160,7 @@ class Tour {
   const std::vector<VisitItem>& items_;
   Point start_;
   std::vector<VisitStep> s_;
+  std::vector<bool> dirty_;
   const Progress& progress_;
 };
 
@@ -199,11 +215,7 @@ std::vector<VisitStep> plan_visit_order(const std::vector<VisitItem>& items, con
   // good for letters, and the improvement moves below never make a tour longer.
   const bool take_nn = travel_length(items, nn, start) < travel_length(items, given, start);
   Tour tour(items, start, take_nn ? std::move(nn) : std::move(given), progress);
-  for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {
-    const bool a = tour.two_opt_sweep();
-    const bool b = tour.relocate_sweep();
-    if (!a && !b) break;
-  }
+  tour.improve();
   return std::move(tour.steps());
 }
 

@@ -4,7 +4,8 @@
 // on a mill, jumps on a galvo) stays short. Nearest neighbour with reversal (an R-tree of the
 // entry points not yet used), then 2-opt (reverse a run of reversible items) and relocation
 // (move one item elsewhere, optionally reversed) within a window of 24 positions around each
-// item, until no move shortens the travel (at most 20 sweeps): O(N log N) in the number of items.
+// item, looked at again only near a change, until no move shortens the travel: O(N log N) in the
+// number of items.
 // The travel is open: it starts at `start` and ends at the last exit.
 #include <cstddef>
 #include <vector>

@@ -5,6 +5,8 @@
 #include <boost/geometry/index/rtree.hpp>
 #include <cmath>
 #include <iterator>
+#include <map>
+#include <tuple>
 
 #include "fonts/overloaded.hpp"
 #include "fonts/stroke_join.hpp"
@@ -114,6 +116,113 @@ bool faces(const Seg& seg, double u, const Point& here, const Point& other) {
   return std::abs(away.dot(tangent)) <= kSquareSin * len;
 }
 
+// One letter's strokes flattened into segments, in its own frame, with an R-tree of their boxes.
+struct LetterSegs {
+  std::vector<Seg> segs;
+  std::vector<StrokeInfo> strokes;
+  Box box;
+  bgi::rtree<std::pair<RBox, std::size_t>, bgi::rstar<16>> tree;
+};
+
+RBox box_of(const Seg& s, double grow) {
+  return RBox(RPoint(std::min(s.a.x(), s.b.x()) - grow, std::min(s.a.y(), s.b.y()) - grow),
+              RPoint(std::max(s.a.x(), s.b.x()) + grow, std::max(s.a.y(), s.b.y()) + grow));
+}
+
+LetterSegs letter_segs(const std::vector<Element>& elements, double join_tol, double flat_tol) {
+  LetterSegs out;
+  std::vector<Seg>& segs = out.segs;
+  for (const ChainedStroke& st : chain_strokes(elements, join_tol)) {
+    const std::size_t id = out.strokes.size();
+    StrokeInfo info;
+    info.closed = st.closed(join_tol);
+    std::vector<Point> pts;
+    for (const Element& e : st.elements) {
+      const std::vector<Point> piece = flatten_element(e, std::max(chord_tolerance(e, flat_tol), 1e-9));
+      pts.insert(pts.end(), pts.empty() ? piece.begin() : piece.begin() + 1, piece.end());
+    }
+    const std::size_t first = segs.size();
+    if (pts.size() == 1) pts.push_back(pts.front());
+    for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
+      Seg sg;
+      sg.a = pts[k];
+      sg.b = pts[k + 1];
+      sg.stroke = id;
+      sg.s0 = info.length;
+      info.length += (sg.b - sg.a).norm();
+      segs.push_back(sg);
+      out.box.add(sg.a);
+      out.box.add(sg.b);
+    }
+    const std::size_t last = segs.size() - 1;
+    for (std::size_t k = first; k <= last; ++k) {
+      if (k > first) segs[k].dir_before_a = (segs[k - 1].b - segs[k - 1].a).normalized();
+      if (k < last) segs[k].dir_after_b = (segs[k + 1].b - segs[k + 1].a).normalized();
+    }
+    info.closed = info.closed && info.length > join_tol;  // a point is a free end, not a loop
+    if (info.closed) {
+      segs[first].dir_before_a = (segs[last].b - segs[last].a).normalized();
+      segs[last].dir_after_b = (segs[first].b - segs[first].a).normalized();
+    } else {
+      segs[first].free_a = segs[last].free_b = true;
+    }
+    out.strokes.push_back(info);
+  }
+  std::vector<std::pair<RBox, std::size_t>> boxes;
+  for (std::size_t k = 0; k < segs.size(); ++k) boxes.push_back({box_of(segs[k], 0), k});
+  out.tree = decltype(out.tree)(boxes.begin(), boxes.end());
+  return out;
+}
+
+// A letter's segments moved into another frame (directions rotate with them).
+std::vector<Seg> moved(const std::vector<Seg>& segs, const Affine& t) {
+  std::vector<Seg> out = segs;
+  for (Seg& sg : out) {
+    sg.a = t * sg.a;
+    sg.b = t * sg.b;
+    sg.dir_before_a = t.linear() * sg.dir_before_a;
+    sg.dir_after_b = t.linear() * sg.dir_after_b;
+  }
+  return out;
+}
+
+// The narrowest gap no wider than `limit` between the segments `others` (in `letter`'s frame)
+// and `letter`'s own, or — with `others` null — within `letter`, its strokes facing themselves.
+std::optional<StrokeGap> narrowest(const LetterSegs& letter, const std::vector<Seg>* others, double limit,
+                                   double touch) {
+  std::optional<StrokeGap> best;
+  const std::vector<Seg>& from = others ? *others : letter.segs;
+  std::vector<std::pair<RBox, std::size_t>> near;
+  for (std::size_t i = 0; i < from.size(); ++i) {
+    const Seg& p = from[i];
+    near.clear();
+    letter.tree.query(bgi::intersects(box_of(p, limit)), std::back_inserter(near));
+    for (const auto& [box, j] : near) {
+      if (!others && j <= i) continue;
+      const Seg& q = letter.segs[j];
+      double u = 0, v = 0;
+      closest_params(p.a, p.b, q.a, q.b, u, v);
+      const Point x = p.a + u * (p.b - p.a), y = q.a + v * (q.b - q.a);
+      const double d = (x - y).norm();
+      if (d <= touch || d > limit) continue;
+      if (!others && p.stroke == q.stroke) {
+        const StrokeInfo& st = letter.strokes[p.stroke];
+        double along = std::abs((q.s0 + v * (q.b - q.a).norm()) - (p.s0 + u * (p.b - p.a).norm()));
+        if (st.closed) along = std::min(along, st.length - along);
+        if (along < kSameStrokeDetour * d) continue;
+      }
+      if (!faces(p, u, x, y) || !faces(q, v, y, x)) continue;
+      limit = d;
+      best = StrokeGap{d, x, y};
+    }
+  }
+  return best;
+}
+
+// Where one glyph lies relative to another, rounded (1 nm, 1e-12 rad): pairs of letters that
+// stand the same way to each other — every "he" of a text in rows — are measured once.
+using PairKey = std::tuple<std::size_t, std::size_t, long long, long long, long long>;
+
 }  // namespace
 
 std::optional<StrokeGap> narrowest_stroke_gap(const Figure& figure, double up_to_mm, const Progress& progress) {
@@ -122,83 +231,73 @@ std::optional<StrokeGap> narrowest_stroke_gap(const Figure& figure, double up_to
   const double flat_tol = std::max(kFlattenFraction * height, 1e-6);
   const double touch = std::max(kTouchFraction * height, join_tol);
 
-  std::vector<Seg> segs;
-  std::vector<StrokeInfo> strokes;
-  for (const PlacedGlyph& g : figure.glyphs) {
-    for (const ChainedStroke& st : chain_strokes(g.elements, join_tol)) {
-      const std::size_t id = strokes.size();
-      StrokeInfo info;
-      info.closed = st.closed(join_tol);
-      std::vector<Point> pts;
-      for (const Element& e : st.elements) {
-        const std::vector<Point> piece = flatten_element(e, std::max(chord_tolerance(e, flat_tol), 1e-9));
-        pts.insert(pts.end(), pts.empty() ? piece.begin() : piece.begin() + 1, piece.end());
-      }
-      const std::size_t first = segs.size();
-      if (pts.size() == 1) pts.push_back(pts.front());
-      for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
-        Seg s;
-        s.a = pts[k];
-        s.b = pts[k + 1];
-        s.stroke = id;
-        s.s0 = info.length;
-        info.length += (s.b - s.a).norm();
-        segs.push_back(s);
-      }
-      const std::size_t last = segs.size() - 1;
-      for (std::size_t k = first; k <= last; ++k) {
-        if (k > first) segs[k].dir_before_a = (segs[k - 1].b - segs[k - 1].a).normalized();
-        if (k < last) segs[k].dir_after_b = (segs[k + 1].b - segs[k + 1].a).normalized();
-      }
-      info.closed = info.closed && info.length > join_tol;  // a point is a free end, not a loop
-      if (info.closed) {
-        segs[first].dir_before_a = (segs[last].b - segs[last].a).normalized();
-        segs[last].dir_after_b = (segs[first].b - segs[first].a).normalized();
-      } else {
-        segs[first].free_a = segs[last].free_b = true;
-      }
-      strokes.push_back(info);
+  // Each distinct letter once, in its own frame: a glyph whose shape the Figure does not hold
+  // (a figure built by hand) is a letter of its own, in the field frame.
+  std::vector<LetterSegs> letters;
+  std::vector<std::size_t> letter_of(figure.glyphs.size());
+  std::vector<Affine> frame(figure.glyphs.size(), Affine::Identity());
+  std::map<std::size_t, std::size_t> of_shape;
+  for (std::size_t g = 0; g < figure.glyphs.size(); ++g) {
+    const PlacedGlyph& pg = figure.glyphs[g];
+    const bool shaped = pg.shape < figure.shapes.size() && figure.shapes[pg.shape].code_point == pg.code_point &&
+                        !figure.shapes[pg.shape].elements.empty();
+    if (shaped) {
+      frame[g] = pg.placement();
+      auto [it, fresh] = of_shape.emplace(pg.shape, letters.size());
+      if (fresh) letters.push_back(letter_segs(figure.shapes[pg.shape].elements, join_tol, flat_tol));
+      letter_of[g] = it->second;
+    } else {
+      letter_of[g] = letters.size();
+      letters.push_back(letter_segs(pg.elements, join_tol, flat_tol));
     }
   }
 
-  std::vector<std::pair<RBox, std::size_t>> boxes;
-  boxes.reserve(segs.size());
-  for (std::size_t k = 0; k < segs.size(); ++k) {
-    const Seg& s = segs[k];
-    boxes.push_back({RBox(RPoint(std::min(s.a.x(), s.b.x()), std::min(s.a.y(), s.b.y())),
-                          RPoint(std::max(s.a.x(), s.b.x()), std::max(s.a.y(), s.b.y()))),
-                     k});
-  }
-  const bgi::rtree<std::pair<RBox, std::size_t>, bgi::rstar<16>> tree(boxes.begin(), boxes.end());
-
   std::optional<StrokeGap> best;
   double limit = up_to_mm;
+  const auto keep = [&](const std::optional<StrokeGap>& g, const Affine& to_field) {
+    if (!g || g->width_mm > limit) return;
+    limit = g->width_mm;
+    best = StrokeGap{g->width_mm, to_field * g->a, to_field * g->b};
+  };
+  // Within each letter (its strokes facing each other), once per distinct letter.
+  std::vector<bool> measured(letters.size(), false);
+  for (std::size_t g = 0; g < figure.glyphs.size(); ++g) {
+    if (measured[letter_of[g]]) continue;
+    measured[letter_of[g]] = true;
+    keep(narrowest(letters[letter_of[g]], nullptr, limit, touch), frame[g]);
+  }
+  // Between neighbouring glyphs: pairs whose boxes come within the tool of each other, each
+  // distinct relative placement once.
+  std::vector<std::pair<RBox, std::size_t>> boxes;
+  for (std::size_t g = 0; g < figure.glyphs.size(); ++g) {
+    const Box& b = letters[letter_of[g]].box;
+    if (b.empty()) continue;
+    Box placed;
+    for (const Point& c : {b.min, b.max, Point(b.min.x(), b.max.y()), Point(b.max.x(), b.min.y())})
+      placed.add(frame[g] * c);
+    boxes.push_back({RBox(RPoint(placed.min.x(), placed.min.y()), RPoint(placed.max.x(), placed.max.y())), g});
+  }
+  const bgi::rtree<std::pair<RBox, std::size_t>, bgi::rstar<16>> glyphs(boxes.begin(), boxes.end());
+  std::map<PairKey, std::optional<StrokeGap>> seen;  // in the first glyph's frame
   std::vector<std::pair<RBox, std::size_t>> near;
-  for (std::size_t i = 0; i < segs.size(); ++i) {
-    if (i % 1024 == 0) progress.step("gcode: measuring gaps between strokes", i, segs.size());
-    const Seg& p = segs[i];
-    const RBox& b = boxes[i].first;
+  for (const auto& [box, g] : boxes) {
+    if (g % 256 == 0) progress.step("gcode: measuring gaps between strokes, glyph", g, figure.glyphs.size());
     near.clear();
-    tree.query(bgi::intersects(RBox(RPoint(b.min_corner().get<0>() - limit, b.min_corner().get<1>() - limit),
-                                    RPoint(b.max_corner().get<0>() + limit, b.max_corner().get<1>() + limit))),
-               std::back_inserter(near));
-    for (const auto& [box, j] : near) {
-      if (j <= i) continue;
-      const Seg& q = segs[j];
-      double u = 0, v = 0;
-      closest_params(p.a, p.b, q.a, q.b, u, v);
-      const Point x = p.a + u * (p.b - p.a), y = q.a + v * (q.b - q.a);
-      const double d = (x - y).norm();
-      if (d <= touch || d > limit) continue;
-      if (p.stroke == q.stroke) {
-        const StrokeInfo& st = strokes[p.stroke];
-        double along = std::abs((q.s0 + v * (q.b - q.a).norm()) - (p.s0 + u * (p.b - p.a).norm()));
-        if (st.closed) along = std::min(along, st.length - along);
-        if (along < kSameStrokeDetour * d) continue;
+    const RBox grown(RPoint(box.min_corner().get<0>() - up_to_mm, box.min_corner().get<1>() - up_to_mm),
+                     RPoint(box.max_corner().get<0>() + up_to_mm, box.max_corner().get<1>() + up_to_mm));
+    glyphs.query(bgi::intersects(grown), std::back_inserter(near));
+    for (const auto& [other_box, h] : near) {
+      if (h <= g) continue;
+      const Affine rel = frame[g].inverse() * frame[h];  // h's frame → g's
+      const double angle = std::atan2(rel.linear()(1, 0), rel.linear()(0, 0));
+      const PairKey key{letter_of[g], letter_of[h], std::llround(rel.translation().x() * 1e6),
+                        std::llround(rel.translation().y() * 1e6), std::llround(angle * 1e12)};
+      auto it = seen.find(key);
+      if (it == seen.end()) {
+        const std::vector<Seg> other = moved(letters[letter_of[h]].segs, rel);
+        it = seen.emplace(key, narrowest(letters[letter_of[g]], &other, up_to_mm, touch)).first;
       }
-      if (!faces(p, u, x, y) || !faces(q, v, y, x)) continue;
-      limit = d;
-      best = StrokeGap{d, x, y};
+      keep(it->second, frame[g]);
     }
   }
   return best;

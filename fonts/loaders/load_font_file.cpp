@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/loaders.hpp"
 
 namespace fs = std::filesystem;

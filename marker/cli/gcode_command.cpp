@@ -11,7 +11,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/utf8.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/console_progress.hpp"

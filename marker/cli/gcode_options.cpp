@@ -2,9 +2,9 @@
 
 #include <tuple>
 
-#include "fonts/error.hpp"
-#include "marker/cli/option_ranges.hpp"
+#include "base/error.hpp"
 #include "marker/cli/machine_values.hpp"
+#include "marker/cli/option_ranges.hpp"
 #include "marker/cli/tool_measure_report.hpp"
 #include "marker/limits/cnc_limits.hpp"
 

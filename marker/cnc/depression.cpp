@@ -3,7 +3,7 @@
 #include <map>
 #include <tuple>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/stroke_font.hpp"
 #include "fonts/stroke_join.hpp"
 #include "marker/cnc/cut_moves.hpp"

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 namespace {

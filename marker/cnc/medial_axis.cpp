@@ -9,9 +9,9 @@
 #include <string>
 #include <unordered_map>
 
-#include "fonts/error.hpp"
-#include "marker/cnc/clipper_paths.hpp"
+#include "base/error.hpp"
 #include "marker/cnc/element_distance.hpp"
+#include "marker/geometry/clipper_paths.hpp"
 
 namespace mark::axis_detail {
 

@@ -10,7 +10,7 @@
 
 #include "fonts/overloaded.hpp"
 #include "fonts/stroke_join.hpp"
-#include "marker/cnc/flatten.hpp"
+#include "marker/geometry/flatten.hpp"
 
 namespace mark {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "marker/cnc/clipper_paths.hpp"
+#include "marker/geometry/clipper_paths.hpp"
 #include "marker/preview/canvas.hpp"
 
 namespace mark {

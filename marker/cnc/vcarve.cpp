@@ -5,11 +5,11 @@
 #include <map>
 #include <numbers>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/stroke_font.hpp"
 #include "fonts/stroke_join.hpp"
-#include "marker/cnc/clipper_paths.hpp"
 #include "marker/cnc/pocket.hpp"
+#include "marker/geometry/clipper_paths.hpp"
 #include "marker/order/visit_order.hpp"
 
 namespace mark {

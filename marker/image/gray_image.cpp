@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 namespace {

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/image/gray_image.hpp"
 
 namespace mark {

@@ -6,7 +6,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/stroke_join.hpp"
 #include "marker/peen/dot_layout.hpp"
 

@@ -10,12 +10,12 @@
 #include <cstdlib>
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cli/machine_values.hpp"
 #include "marker/cli/option_ranges.hpp"
+#include "marker/cli/option_values.hpp"
 #include "marker/limits/cnc_limits.hpp"
 #include "marker/limits/layout_limits.hpp"
-#include "marker/cli/option_values.hpp"
 
 namespace {
 

@@ -195,7 +195,7 @@ TEST(GcodeCli, ToolMeasureReportsDiameterAndWear) {
   EXPECT_NEAR(number_after(r.out, "mm: radius "), -0.04, 0.001) << r.out;
   const CliResult bad = run_cli({"tool-measure", "/nonexistent.png", "--pixel-size", "5"});
   EXPECT_EQ(bad.code, 1);
-  EXPECT_NE(bad.err.find("marker: /nonexistent.png: cannot open"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("marker: '/nonexistent.png': cannot open the image"), std::string::npos) << bad.err;
 }
 
 // The tool measurement as JSON, the same figures as the text, and the text says from which axis

@@ -13,6 +13,7 @@
 
 #include "fonts/catalog.hpp"
 #include "fonts/error.hpp"
+#include "tests/error_of.hpp"
 #include "fonts/loaders.hpp"
 #include "fonts/loaders/outline_glyphs.hpp"
 #include "fonts/loaders/read_font_file.hpp"
@@ -27,15 +28,6 @@ const std::string kLiberation = "/usr/share/fonts/truetype/liberation2/Liberatio
 
 loaders::OutlineGlyphs glyphs_of(const std::string& path, OutlineLimits limits = {}) {
   return loaders::OutlineGlyphs(loaders::read_font_file(path), path, kOutlineToleranceEm, limits);
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 TEST(OutlineGlyphs, NothingIsMadeUntilAskedAndThenOncePerGlyphIndex) {

@@ -15,6 +15,7 @@
 #include <random>
 
 #include "fonts/error.hpp"
+#include "tests/error_of.hpp"
 #include "marker/image/gray_image.hpp"
 #include "png_writer.hpp"
 
@@ -25,15 +26,6 @@ namespace {
 
 // 'path', as the reader names files (built with append: GCC 12 warns falsely, -Wrestrict, on "'" + s).
 std::string quoted(const std::string& path) { return std::string(1, '\'').append(path).append(1, '\''); }
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 // The intensity the reader promises for pixel (x, y) of `spec`: grey as it is, colour as
 // 0.299 R + 0.587 G + 0.114 B, alpha composited over white.

@@ -4,12 +4,12 @@
 // Verification of an 8 mm code (part image, camera, libdmtx) is timed on its own.
 #include <benchmark/benchmark.h>
 
-#include "driver/sim_scanner.hpp"
+#include "driver/sim/sim_scanner.hpp"
 #include "fonts/catalog.hpp"
 #include "marker/codes/code_object.hpp"
-#include "marker/job/simulate_plan.hpp"
 #include "marker/fill/fill.hpp"
 #include "marker/job/head_pen.hpp"
+#include "marker/job/simulate_plan.hpp"
 #include "marker/layout/layout.hpp"
 #include "marker/plan/plan.hpp"
 

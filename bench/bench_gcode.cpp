@@ -12,9 +12,9 @@
 
 #include "fonts/catalog.hpp"
 #include "marker/cnc/depression.hpp"
-#include "marker/cnc/flatten.hpp"
 #include "marker/cnc/gcode_writer.hpp"
 #include "marker/cnc/protrusion.hpp"
+#include "marker/geometry/flatten.hpp"
 #include "marker/layout/layout.hpp"
 
 namespace {

@@ -13,7 +13,7 @@
 
 #include <filesystem>
 
-#include "marker/job/part_run.hpp"
+#include "marker/production/part_run.hpp"
 #include "marker/store/digest.hpp"
 #include "marker/store/open_store.hpp"
 

@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "driver/quality.hpp"
-#include "driver/sim_scanner.hpp"
+#include "driver/sim/quality.hpp"
+#include "driver/sim/sim_scanner.hpp"
 
 namespace mark {
 namespace {

@@ -1,6 +1,6 @@
 // Characters per second, SCANLAB's method (galvo.md §5): the 62 characters A–Z a–z 0–9 in the
 // built-in font at 1 mm cap height, marked on each simulated head with each strategy. For each
-// quality class (driver/quality_class.hpp) the search finds the highest characters per second
+// quality class (driver/sim/quality_class.hpp) the search finds the highest characters per second
 // that still meets the class, over every parameter the strategy has — the marking speed and its
 // delays, run-ins, rates and thresholds — and prints the parameters it found as `marker mark`
 // options. Every trial is a virtual-time run of the whole job: layout, plan, locus, line memory,
@@ -28,11 +28,11 @@
 #include <thread>
 #include <vector>
 
-#include "driver/head_model.hpp"
+#include "base/error.hpp"
 #include "driver/device_error.hpp"
-#include "driver/quality_class.hpp"
+#include "driver/sim/head_model.hpp"
+#include "driver/sim/quality_class.hpp"
 #include "fonts/catalog.hpp"
-#include "fonts/error.hpp"
 #include "marker/cli/pen_options.hpp"
 #include "marker/head/head_fit.hpp"
 #include "marker/job/head_pen.hpp"

@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "driver/sim_scanner.hpp"
+#include "driver/sim/sim_scanner.hpp"
 #include "ringbuffer/drain.hpp"
 #include "ringbuffer/line_memory.hpp"
 

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,16 +1,10 @@
 #pragma once
-// Errors that name the input and the place. Library code throws these; the CLI prints what()
-// as one line and exits non-zero.
-#include <stdexcept>
+// Font errors that name the input and the place (InputError itself is base/error.hpp).
 #include <string>
 
-namespace mark {
+#include "base/error.hpp"
 
-// Bad input of any kind: a malformed font file, an unknown glyph, an impossible parameter.
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+namespace mark {
 
 // A malformed font file: the message names the file, the line and what is wrong.
 class FontFileError : public InputError {

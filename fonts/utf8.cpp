@@ -1,6 +1,6 @@
 #include "fonts/utf8.hpp"
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Test support: how the emulated LMC board executes a list on its own 10 µs clock, one tick at
-// a time, into ScanSamples for the simulated scanner (driver/sim_scanner.hpp). This is our model
+// a time, into ScanSamples for the simulated scanner (driver/sim/sim_scanner.hpp). This is our model
 // of the board — RTC-class semantics (galvo.md §3.1), since BJJCZ documents none:
 //
 // - JumpTo / MarkTo: a straight move from the current point at the jump / mark speed word

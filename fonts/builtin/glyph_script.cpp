@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/stroke_font.hpp"
 
 namespace mark {

@@ -3,7 +3,7 @@
 #include <cctype>
 #include <filesystem>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/loaders.hpp"
 #include "fonts/loaders/read_font_file.hpp"
 

@@ -7,8 +7,8 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "driver/grey_png.hpp"
-#include "fonts/error.hpp"
+#include "base/error.hpp"
+#include "driver/sim/grey_png.hpp"
 #include "marker/cli/code_options.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/hatch_options.hpp"

@@ -1,8 +1,8 @@
 #include "marker/cli/code_options.hpp"
 
-#include "fonts/error.hpp"
-#include "marker/codes/code_data.hpp"
+#include "base/error.hpp"
 #include "marker/cli/option_ranges.hpp"
+#include "marker/codes/code_data.hpp"
 #include "marker/limits/code_limits.hpp"
 
 namespace mark::cli {

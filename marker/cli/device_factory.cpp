@@ -1,8 +1,8 @@
 #include "marker/cli/device_factory.hpp"
 
+#include "base/error.hpp"
 #include "driver/lmc/lmc_open.hpp"
-#include "driver/sim_scanner.hpp"
-#include "fonts/error.hpp"
+#include "driver/sim/sim_scanner.hpp"
 
 namespace mark::cli {
 

@@ -11,15 +11,15 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "base/error.hpp"
 #include "driver/lmc/lmc_open.hpp"
-#include "fonts/error.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/lmc_options.hpp"
 #include "marker/cli/option_ranges.hpp"
-#include "marker/limits/pen_limits.hpp"
 #include "marker/frame/frame_paths.hpp"
+#include "marker/limits/pen_limits.hpp"
 
 namespace mark::cli {
 

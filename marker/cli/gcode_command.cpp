@@ -8,7 +8,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/utf8.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/layout_options.hpp"

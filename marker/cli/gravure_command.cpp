@@ -10,12 +10,12 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cli/commands.hpp"
-#include "marker/cli/print.hpp"
 #include "marker/cli/gravure_options.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/option_ranges.hpp"
+#include "marker/cli/print.hpp"
 #include "marker/gravure/gravure_job.hpp"
 #include "marker/gravure/gravure_json.hpp"
 #include "marker/gravure/gravure_preview.hpp"

@@ -3,7 +3,7 @@
 #include <sstream>
 #include <vector>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/limits/gravure_limits.hpp"
 
 namespace mark::cli {

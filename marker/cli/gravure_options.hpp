@@ -5,7 +5,7 @@
 // value and the allowed range in one line.
 #include <string>
 
-#include "driver/stylus_head_model.hpp"
+#include "driver/sim/stylus_head_model.hpp"
 #include "marker/gravure/screen.hpp"
 #include "marker/gravure/tuning_filter.hpp"
 

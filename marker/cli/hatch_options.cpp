@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/limits/fill_limits.hpp"
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/head/head_profile.hpp"
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "driver/head_model.hpp"
+#include "driver/sim/head_model.hpp"
 
 namespace mark::cli {
 

@@ -2,7 +2,7 @@
 
 #include <charconv>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark::cli {
 

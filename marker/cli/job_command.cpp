@@ -8,17 +8,17 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
 #include "marker/cli/production_options.hpp"
 #include "marker/job/auto_speed.hpp"
-#include "marker/job/part_texts.hpp"
 #include "marker/limits/counter_limits.hpp"
 #include "marker/limits/pen_limits.hpp"
 #include "marker/output/output_file.hpp"
+#include "marker/production/part_texts.hpp"
 #include "marker/vars/clock.hpp"
 
 namespace mark::cli {

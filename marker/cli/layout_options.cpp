@@ -2,8 +2,8 @@
 
 #include <iostream>
 
+#include "base/error.hpp"
 #include "fonts/catalog.hpp"
-#include "fonts/error.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
 #include "marker/limits/layout_limits.hpp"

@@ -1,7 +1,7 @@
 #include "marker/cli/lmc_options.hpp"
 
+#include "base/error.hpp"
 #include "driver/lmc/cor_file.hpp"
-#include "fonts/error.hpp"
 #include "marker/cli/option_ranges.hpp"
 
 namespace mark::cli {

@@ -3,7 +3,7 @@
 // SHA-256, texts, serial values, outcome and the device's figures.
 #include <iostream>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/production_options.hpp"
 #include "marker/store/audit_format.hpp"

@@ -3,15 +3,15 @@
 #include <cstdio>
 #include <iostream>
 
-#include "driver/quality_class.hpp"
-#include "fonts/error.hpp"
-#include "marker/limits/counter_limits.hpp"
+#include "base/error.hpp"
+#include "driver/sim/quality_class.hpp"
 #include "marker/cli/device_factory.hpp"
 #include "marker/cli/inject_option.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/production_options.hpp"
-#include "marker/job/part_json.hpp"
-#include "marker/job/part_run.hpp"
+#include "marker/limits/counter_limits.hpp"
+#include "marker/production/part_json.hpp"
+#include "marker/production/part_run.hpp"
 #include "marker/store/open_store.hpp"
 
 namespace mark::cli {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <type_traits>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cli/option_values.hpp"
 
 namespace mark::cli {

@@ -3,7 +3,7 @@
 #include <charconv>
 #include <cstdlib>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark::cli {
 

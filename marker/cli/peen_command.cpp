@@ -6,14 +6,14 @@
 #include <cstdio>
 #include <iostream>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cli/commands.hpp"
-#include "marker/cli/interrupt.hpp"
-#include "marker/cli/print.hpp"
 #include "marker/cli/gantry_options.hpp"
+#include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
+#include "marker/cli/print.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/peen/dot_fonts.hpp"
 #include "marker/peen/dot_layout.hpp"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job_checks.hpp"

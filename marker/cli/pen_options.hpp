@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "driver/head_model.hpp"
+#include "driver/sim/head_model.hpp"
 #include "marker/head/head_profile.hpp"
 #include "marker/plan/pen.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <unistd.h>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/store/digest.hpp"
 #include "marker/store/open_store.hpp"
 

@@ -10,12 +10,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/production_options.hpp"
-#include "marker/job/job_file.hpp"
 #include "marker/limits/counter_limits.hpp"
+#include "marker/production/job_file.hpp"
 #include "marker/store/open_store.hpp"
 
 namespace mark::cli {

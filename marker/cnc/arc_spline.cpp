@@ -6,7 +6,7 @@
 
 #include "fonts/overloaded.hpp"
 #include "marker/cnc/element_distance.hpp"
-#include "marker/cnc/flatten.hpp"
+#include "marker/geometry/flatten.hpp"
 
 namespace mark {
 namespace {

@@ -6,8 +6,8 @@
 #include <numbers>
 #include <numeric>
 
-#include "marker/cnc/clipper_paths.hpp"
 #include "marker/cnc/element_distance.hpp"
+#include "marker/geometry/clipper_paths.hpp"
 
 namespace mark {
 namespace {

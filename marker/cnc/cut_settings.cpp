@@ -4,7 +4,7 @@
 #include <sstream>
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 namespace {

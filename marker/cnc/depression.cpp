@@ -2,7 +2,7 @@
 
 #include <map>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/stroke_font.hpp"
 #include "marker/cnc/cut_moves.hpp"
 #include "marker/cnc/cut_strokes.hpp"

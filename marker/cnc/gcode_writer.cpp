@@ -7,7 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/overloaded.hpp"
 #include "marker/cnc/gcode_number.hpp"
 

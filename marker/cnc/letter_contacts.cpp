@@ -1,6 +1,6 @@
 #include "marker/cnc/letter_contacts.hpp"
 
-#include "marker/cnc/clipper_paths.hpp"
+#include "marker/geometry/clipper_paths.hpp"
 
 namespace mark {
 namespace {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "marker/cnc/clipper_paths.hpp"
+#include "marker/geometry/clipper_paths.hpp"
 
 namespace mark {
 namespace {

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <sstream>
 
-#include "fonts/error.hpp"
-#include "marker/cnc/clipper_paths.hpp"
+#include "base/error.hpp"
 #include "marker/cnc/comp_contours.hpp"
 #include "marker/cnc/pocket.hpp"
+#include "marker/geometry/clipper_paths.hpp"
 
 namespace mark {
 namespace {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "marker/cnc/clipper_paths.hpp"
+#include "marker/geometry/clipper_paths.hpp"
 #include "marker/preview/canvas.hpp"
 
 namespace mark {

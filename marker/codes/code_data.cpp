@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 namespace {

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/limits/code_limits.hpp"
 
 namespace mark {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "driver/part_image.hpp"
+#include "driver/sim/part_image.hpp"
 #include "marker/codes/symbology.hpp"
 
 namespace mark {

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 namespace {

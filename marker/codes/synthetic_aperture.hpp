@@ -4,7 +4,7 @@
 // symbol the way a reader's optics of that resolution would — gaps between dots or lines much
 // narrower than the aperture close, specks vanish. TR 29158 sizes the aperture at 50 %–80 % of
 // the module.
-#include "driver/part_image.hpp"
+#include "driver/sim/part_image.hpp"
 
 namespace mark {
 

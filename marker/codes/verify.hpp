@@ -1,6 +1,6 @@
 #pragma once
 // Verification off the simulated mark: the dose the beam really left is spread by the beam
-// profile, thresholded by the material (driver/part_image.hpp), seen by a camera with about
+// profile, thresholded by the material (driver/sim/part_image.hpp), seen by a camera with about
 // seven pixels per module, and decoded by a real reader. The figures are grade-like, in the
 // spirit of ISO/IEC TR 29158 (DPM verification): the module size the reader measured along each
 // axis, axial non-uniformity (ISO/IEC 15415's |X − Y| / mean), and, against the intended module
@@ -9,9 +9,9 @@
 #include <optional>
 #include <string>
 
-#include "driver/dose_raster.hpp"
-#include "driver/mark_response.hpp"
-#include "driver/part_image.hpp"
+#include "driver/sim/dose_raster.hpp"
+#include "driver/sim/mark_response.hpp"
+#include "driver/sim/part_image.hpp"
 #include "marker/codes/code_marks.hpp"
 #include "marker/codes/code_spec.hpp"
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <limits>
 
-#include "marker/cnc/clipper_paths.hpp"
 #include "marker/fill/arc_refit.hpp"
+#include "marker/geometry/clipper_paths.hpp"
 
 namespace mark {
 namespace {

@@ -1,7 +1,7 @@
 #include "marker/fill/fill_region.hpp"
 
-#include "marker/cnc/clipper_paths.hpp"
-#include "marker/cnc/flatten.hpp"
+#include "marker/geometry/clipper_paths.hpp"
+#include "marker/geometry/flatten.hpp"
 
 namespace mark {
 

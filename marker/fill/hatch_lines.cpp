@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include "fonts/error.hpp"
-#include "marker/cnc/clipper_paths.hpp"
+#include "base/error.hpp"
+#include "marker/geometry/clipper_paths.hpp"
 
 namespace mark {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <string>
 
-#include "fonts/error.hpp"
-#include "marker/cnc/flatten.hpp"
+#include "base/error.hpp"
+#include "marker/geometry/flatten.hpp"
 #include "marker/plan/stroke.hpp"
 
 namespace mark {

@@ -7,10 +7,10 @@
 #include <functional>
 #include <vector>
 
-#include "driver/sim_stylus_head.hpp"
+#include "driver/sim/sim_stylus_head.hpp"
 #include "marker/gravure/head_design.hpp"
-#include "marker/gravure/head_fit.hpp"
-#include "marker/gravure/head_response.hpp"
+#include "marker/gravure/stylus_head_fit.hpp"
+#include "marker/gravure/stylus_head_response.hpp"
 #include "marker/gravure/stylus_run.hpp"
 
 namespace mark {

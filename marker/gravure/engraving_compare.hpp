@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include "driver/stylus_cells.hpp"
+#include "driver/sim/stylus_cells.hpp"
 #include "marker/gravure/cell_source.hpp"
 #include "marker/gravure/stylus_toolpath.hpp"
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "driver/sim_stylus_head.hpp"
+#include "driver/sim/sim_stylus_head.hpp"
 #include "marker/gravure/auto_tune.hpp"
 #include "marker/gravure/cell_setup.hpp"
 #include "marker/gravure/engraving_compare.hpp"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "driver/stylus_head_model.hpp"
+#include "driver/sim/stylus_head_model.hpp"
 #include "marker/gravure/head_design.hpp"
 
 namespace mark {

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <vector>
 
-#include "driver/stylus_cells.hpp"
+#include "driver/sim/stylus_cells.hpp"
 #include "marker/gravure/stylus_toolpath.hpp"
 #include "marker/preview/canvas.hpp"
 

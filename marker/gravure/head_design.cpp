@@ -6,7 +6,7 @@
 #include <numbers>
 #include <unsupported/Eigen/Polynomials>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/limits/gravure_limits.hpp"
 
 namespace mark {

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "driver/stylus_head_model.hpp"
+#include "driver/sim/stylus_head_model.hpp"
 #include "marker/gravure/tuning_filter.hpp"
 
 namespace mark {

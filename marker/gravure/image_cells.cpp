@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/limits/gravure_limits.hpp"
 
 namespace mark {

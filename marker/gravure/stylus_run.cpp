@@ -4,7 +4,7 @@
 #include <chrono>
 #include <exception>
 
-#include "driver/stylus_head_model.hpp"
+#include "driver/sim/stylus_head_model.hpp"
 #include "ringbuffer/line_memory.hpp"
 
 namespace mark {

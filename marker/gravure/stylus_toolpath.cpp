@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "driver/stylus_cells.hpp"
-#include "driver/stylus_head_model.hpp"
+#include "driver/sim/stylus_cells.hpp"
+#include "driver/sim/stylus_head_model.hpp"
 #include "marker/limits/gravure_limits.hpp"
 
 namespace mark {

@@ -5,7 +5,7 @@
 //
 // Synchronisation (FIG. 6): the cylinder turns at a fixed cell rate, so stylus sample n stands
 // for track position x_n = n · f_cell / f_s cells — cell ⌊x_n⌋, at the fraction x_n − ⌊x_n⌋ of it
-// (driver/stylus_cells.hpp keeps the exact integer form). At 6.25 kHz that is the seed's 32
+// (driver/sim/stylus_cells.hpp keeps the exact integer form). At 6.25 kHz that is the seed's 32
 // samples a cell; any whole-hertz rate works. The stream is the cells of every track back to
 // back (helical engraving: one track follows the next without a pause), starting and ending
 // with the stylus lifted above the surface.
@@ -17,8 +17,8 @@
 #include <span>
 #include <vector>
 
-#include "marker/gravure/cell_source.hpp"
 #include "marker/gravure/cell_setup.hpp"
+#include "marker/gravure/cell_source.hpp"
 #include "marker/gravure/cubic_spline.hpp"
 #include "marker/gravure/drive_source.hpp"
 

@@ -24,7 +24,7 @@
 #include <string_view>
 #include <vector>
 
-#include "driver/stylus_head_model.hpp"
+#include "driver/sim/stylus_head_model.hpp"
 
 namespace mark {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 namespace {

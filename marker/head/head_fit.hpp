@@ -1,5 +1,5 @@
 #pragma once
-// Head identification, the fitting half (driver/head_response.hpp measures): from the command
+// Head identification, the fitting half (driver/sim/head_response.hpp measures): from the command
 // pattern and the recorded mirror positions alone, fit
 //
 //   - a first-order servo ẋ = (c − x)/τ and a second-order one ẍ = ωn²(c − x) − 2ζωn·ẋ, by least
@@ -14,7 +14,7 @@
 // whose ζ runs off to heavy damping (≥ 3: a first-order head with a sub-tick delay) does not.
 #include <string>
 
-#include "driver/head_response.hpp"
+#include "driver/sim/head_response.hpp"
 #include "marker/head/head_profile.hpp"
 
 namespace mark {

@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "driver/head_model.hpp"
+#include "driver/sim/head_model.hpp"
 
 namespace mark {
 

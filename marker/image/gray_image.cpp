@@ -2,7 +2,7 @@
 // both reading the file as they decode it.
 #include "marker/image/gray_image.hpp"
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/image/image_source.hpp"
 
 namespace mark {

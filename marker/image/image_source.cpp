@@ -6,7 +6,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 

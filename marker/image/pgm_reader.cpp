@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/image/gray_image.hpp"
 #include "marker/image/image_source.hpp"
 

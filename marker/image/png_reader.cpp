@@ -15,7 +15,7 @@
 #include <cstring>
 #include <vector>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/image/gray_image.hpp"
 #include "marker/image/image_source.hpp"
 

@@ -6,7 +6,7 @@
 // when the lit beam passes within 10 µm of it, so 8 µm keeps every arc covered with margin.
 // Measured on the simulated SL10 head (blanking): "ABC" centred is "high" at the speed this
 // gives for 1, 2, 3 and 5 mm (516, 730, 894, 1000 mm/s), "poor" at 1000 mm/s for 1 and 2 mm.
-#include "driver/head_model.hpp"
+#include "driver/sim/head_model.hpp"
 #include "marker/layout/figure.hpp"
 
 namespace mark {

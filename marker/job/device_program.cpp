@@ -8,76 +8,11 @@
 #include <span>
 #include <variant>
 
-#include "fonts/error.hpp"
-#include "fonts/overloaded.hpp"
+#include "base/error.hpp"
+#include "marker/geometry/flatten.hpp"
 
 namespace mark {
 namespace {
-
-// Uniform parameter steps along an arc or ellipse arc whose chords deviate from the curve by at
-// most `tol`: a chord over Δt of a curve whose second derivative (per unit of the angle
-// parameter) is at most R deviates by at most R·Δt²/8, and R ≤ the larger radius.
-std::size_t chord_count(const Element& e, double tol_mm) {
-  const auto [reach, sweep] = std::visit(
-      Overloaded{[](const Line&) { return std::pair{0.0, 0.0}; },
-                 [](const CircularArc& a) { return std::pair{a.radius, a.sweep}; },
-                 [](const EllipticalArc& a) { return std::pair{std::max(a.rx, a.ry), a.sweep}; }},
-      e.geometry());
-  if (reach <= 0) return 1;
-  const double step = std::sqrt(8 * std::max(tol_mm, 1e-7) / reach);
-  return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(std::abs(sweep) / step)));
-}
-
-// The chord points of an arc or ellipse arc at parameters k/n (k = 1 … n): the angle advances by
-// a fixed rotation instead of a sin/cos per point (two-thirds of the conversion's time went to
-// sincos), and the last point is the element's exact end. The recurrence drifts by about
-// k·1e-16 of the radius: far below the chord tolerance for any n a glyph needs. Each curve costs
-// three sincos (start direction, step, end) and an ellipse one more (its rotation); every
-// expression is the one Element::point_at evaluates, so the points are the same to the bit.
-// Points are built coordinate by coordinate, not as Eigen expressions: Eigen stored c and s as
-// two doubles and read them back as one 16-byte vector, a failed store-to-load forward on every
-// chord (a quarter of the conversion's time).
-template <class F>
-void for_chord_points(const Element& e, std::size_t n, F&& emit) {
-  const auto rotate = [&](double c, double s, double step, auto&& place) {
-    const double dc = std::cos(step), ds = std::sin(step);
-    for (std::size_t k = 1; k < n; ++k) {
-      const double c1 = c * dc - s * ds;
-      s = s * dc + c * ds;
-      c = c1;
-      place(c, s);
-    }
-  };
-  std::visit(Overloaded{[&](const Line& l) {
-                          const Point p = l.start + 1.0 * (l.end - l.start);  // point_at(1)
-                          emit(p.x(), p.y());
-                        },
-                        [&](const CircularArc& a) {
-                          const auto on_circle = [&](double c, double s) {
-                            emit(a.center.x() + a.radius * c, a.center.y() + a.radius * s);
-                          };
-                          // The start direction from the start point, as the element has it.
-                          const double c0 = std::cos(a.start_angle), s0 = std::sin(a.start_angle);
-                          const double sx = a.center.x() + a.radius * c0;
-                          const double sy = a.center.y() + a.radius * s0;
-                          rotate((sx - a.center.x()) / a.radius, (sy - a.center.y()) / a.radius,
-                                 a.sweep / double(n), on_circle);
-                          const double th = a.start_angle + 1.0 * a.sweep;
-                          on_circle(std::cos(th), std::sin(th));
-                        },
-                        [&](const EllipticalArc& el) {
-                          const double rc = std::cos(el.rotation), rs = std::sin(el.rotation);
-                          const auto on_ellipse = [&](double c, double s) {
-                            const double x = el.rx * c, y = el.ry * s;
-                            emit(el.center.x() + (rc * x - rs * y), el.center.y() + (rs * x + rc * y));
-                          };
-                          rotate(std::cos(el.start_param), std::sin(el.start_param),
-                                 el.sweep / double(n), on_ellipse);
-                          const double th = el.start_param + 1.0 * el.sweep;
-                          on_ellipse(std::cos(th), std::sin(th));
-                        }},
-             e.geometry());
-}
 
 // The larger of two reaches, NaN if either is (std::max drops a NaN in its second argument).
 double worst(double a, double b) { return a != a || a > b ? a : b; }
@@ -106,7 +41,7 @@ class Builder {
           DeviceCommand::arc_to(p.x(), p.y(), a.center.x(), a.center.y(), a.sweep, speed));
       return;
     }
-    for_chord_points(e, n, [&](double x, double y) {
+    for_each_piece_end(e, n, [&](double x, double y) {
       check(x, y);
       out_.commands.push_back(DeviceCommand::mark_to(x, y, speed));
     });
@@ -115,7 +50,7 @@ class Builder {
 
   // Blanking lines are straight; anything else unlit is flattened like a lit curve.
   void laser_off_line(const Element& e, double speed, std::size_t n) {
-    for_chord_points(e, n, [&](double x, double y) { jump(x, y, speed); });
+    for_each_piece_end(e, n, [&](double x, double y) { jump(x, y, speed); });
   }
 
   void dwell(double seconds, bool laser) {

@@ -2,7 +2,7 @@
 // The default pen for a head: every delay, extension and rate from the planner's model of the
 // head (a head profile: identified by `marker head identify`, or the datasheet's figures), the
 // jump speed from its positioning limit.
-#include "driver/head_model.hpp"
+#include "driver/sim/head_model.hpp"
 #include "marker/head/head_profile.hpp"
 #include "marker/plan/pen.hpp"
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/layout/layout.hpp"
 
 namespace mark {

@@ -2,7 +2,7 @@
 // Refusals before the first sample: a job is only started when everything it will command is
 // inside the head's field (the figure plus blanking lines, run-ins, run-outs and jumps) and its
 // speeds and tick are within the head's limits. Each refusal is one InputError naming the input.
-#include "driver/head_model.hpp"
+#include "driver/sim/head_model.hpp"
 #include "marker/plan/plan.hpp"
 
 namespace mark {

@@ -8,10 +8,10 @@
 #include <limits>
 #include <thread>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/job/device_program.hpp"
-#include "marker/job/program_stream.hpp"
 #include "marker/job/job_run.hpp"
+#include "marker/job/program_stream.hpp"
 
 namespace mark {
 

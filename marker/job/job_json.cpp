@@ -1,6 +1,6 @@
 #include "marker/job/job_json.hpp"
 
-#include "driver/quality_class.hpp"
+#include "driver/sim/quality_class.hpp"
 
 namespace mark {
 

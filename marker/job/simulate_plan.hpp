@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "driver/sim_scanner.hpp"
+#include "driver/sim/sim_scanner.hpp"
 #include "marker/job/job.hpp"
 #include "marker/plan/plan.hpp"
 

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 namespace {

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/peen/gantry_run.hpp"
 

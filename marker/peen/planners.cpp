@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/peen/block_snake.hpp"
 #include "marker/peen/tour_planner.hpp"
 #include "marker/peen/window_snake.hpp"

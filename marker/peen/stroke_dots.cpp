@@ -5,7 +5,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/peen/dot_layout.hpp"
 
 namespace mark {

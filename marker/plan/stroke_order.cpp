@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/order/visit_order.hpp"
 
 namespace mark {

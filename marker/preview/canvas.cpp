@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/output/output_file.hpp"
 
 namespace mark {

@@ -5,7 +5,7 @@
 // shows both what was commanded and what it burned. PNG or SVG by the file's extension.
 #include <string>
 
-#include "driver/dose_raster.hpp"
+#include "driver/sim/dose_raster.hpp"
 #include "marker/plan/plan.hpp"
 
 namespace mark {

@@ -1,6 +1,6 @@
 #include "marker/store/serial_store.hpp"
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/limits/counter_limits.hpp"
 #include "marker/store/utc_time.hpp"
 

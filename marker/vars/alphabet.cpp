@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/utf8.hpp"
 
 namespace mark {

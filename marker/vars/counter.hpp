@@ -15,7 +15,7 @@
 #include <string>
 #include <string_view>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/vars/alphabet.hpp"
 #include "marker/vars/clock.hpp"
 #include "marker/vars/shifts.hpp"

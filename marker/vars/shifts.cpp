@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <charconv>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 namespace {

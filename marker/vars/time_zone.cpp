@@ -2,7 +2,7 @@
 
 #include <date/tz.h>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 

@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "loader_test_util.hpp"
 
 namespace mark {

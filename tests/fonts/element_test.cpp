@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/error.hpp"
 #include "fonts/element.hpp"
-#include "fonts/error.hpp"
 
 namespace mark {
 namespace {

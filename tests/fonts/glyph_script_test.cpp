@@ -8,7 +8,7 @@
 #include <numbers>
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 namespace {

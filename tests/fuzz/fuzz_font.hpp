@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fonts/loaders.hpp"
 
 namespace mark::fuzz {

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/head/head_profile.hpp"
 
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fuzz_check.hpp"
 #include "marker/image/gray_image.hpp"
 

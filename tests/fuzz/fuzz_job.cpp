@@ -5,11 +5,11 @@
 #include <cstdint>
 #include <string_view>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "fuzz_check.hpp"
 #include "marker/job/job_checks.hpp"
-#include "marker/job/job_file.hpp"
-#include "marker/job/part_texts.hpp"
+#include "marker/production/job_file.hpp"
+#include "marker/production/part_texts.hpp"
 
 using mark::fuzz::broken;
 

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
 

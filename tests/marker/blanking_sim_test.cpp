@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "driver/quality.hpp"
-#include "driver/sim_scanner.hpp"
+#include "driver/sim/quality.hpp"
+#include "driver/sim/sim_scanner.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/intended_strokes.hpp"
 #include "marker/job/simulate_plan.hpp"

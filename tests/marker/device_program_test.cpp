@@ -11,8 +11,8 @@
 #include <thread>
 #include <numbers>
 
+#include "base/error.hpp"
 #include "fonts/catalog.hpp"
-#include "fonts/error.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
 #include "marker/job/program_stream.hpp"

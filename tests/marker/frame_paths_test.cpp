@@ -2,8 +2,8 @@
 // every lit point, the strokes follow the glyphs within the flattening tolerance.
 #include <gtest/gtest.h>
 
+#include "base/error.hpp"
 #include "fonts/catalog.hpp"
-#include "fonts/error.hpp"
 #include "marker/frame/frame_paths.hpp"
 #include "marker/job/intended_strokes.hpp"
 #include "marker/layout/layout.hpp"

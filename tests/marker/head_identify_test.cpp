@@ -3,8 +3,8 @@
 // second-order ones, and the speed and acceleration limits.
 #include <gtest/gtest.h>
 
-#include "driver/head_response.hpp"
-#include "fonts/error.hpp"
+#include "base/error.hpp"
+#include "driver/sim/head_response.hpp"
 #include "marker/head/head_fit.hpp"
 
 namespace mark {

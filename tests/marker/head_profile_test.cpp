@@ -7,7 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "tests/marker/cli_runner.hpp"
 
 namespace mark {

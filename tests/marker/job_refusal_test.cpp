@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "base/error.hpp"
 #include "fonts/catalog.hpp"
-#include "fonts/error.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
 #include "marker/job/job_checks.hpp"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/peen/gantry_run.hpp"
 #include "marker/peen/plan_export.hpp"
 #include "peen_test_support.hpp"

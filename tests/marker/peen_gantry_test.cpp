@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/peen/gantry.hpp"
 #include "marker/peen/gantry_run.hpp"
 #include "marker/peen/move_cost.hpp"

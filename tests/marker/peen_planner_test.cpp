@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/peen/block_snake.hpp"
 #include "marker/peen/gantry_run.hpp"
 #include "marker/peen/tour_planner.hpp"

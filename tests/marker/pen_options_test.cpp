@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/head/head_fit.hpp"
 #include "marker/job/head_pen.hpp"
 #include "tests/marker/cli_runner.hpp"

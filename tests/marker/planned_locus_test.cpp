@@ -11,8 +11,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "driver/quality_class.hpp"
-#include "driver/sim_scanner.hpp"
+#include "driver/sim/quality_class.hpp"
+#include "driver/sim/sim_scanner.hpp"
 #include "fonts/catalog.hpp"
 #include "marker/head/head_fit.hpp"
 #include "marker/job/head_pen.hpp"

@@ -3,7 +3,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cnc/tool/edge_scan.hpp"
 
 namespace mark {

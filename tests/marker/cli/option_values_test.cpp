@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark::cli {
 namespace {

@@ -11,7 +11,7 @@
 #include <regex>
 #include <sstream>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cnc/gcode_number.hpp"
 #include "rs274.hpp"
 

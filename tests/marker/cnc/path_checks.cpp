@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "marker/cnc/element_distance.hpp"
-#include "marker/cnc/flatten.hpp"
+#include "marker/geometry/flatten.hpp"
 
 namespace mark::test {
 

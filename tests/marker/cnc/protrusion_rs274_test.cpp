@@ -7,11 +7,11 @@
 #include <string>
 #include <tuple>
 
-#include "fonts/error.hpp"
-#include "marker/cnc/clipper_paths.hpp"
+#include "base/error.hpp"
+#include "cnc_checks.hpp"
 #include "marker/cnc/gcode_writer.hpp"
 #include "marker/cnc/protrusion.hpp"
-#include "cnc_checks.hpp"
+#include "marker/geometry/clipper_paths.hpp"
 #include "rs274.hpp"
 #include "test_figures.hpp"
 

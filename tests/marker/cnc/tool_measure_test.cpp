@@ -12,7 +12,7 @@
 #include <numbers>
 #include <random>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/cnc/tool/edge_scan.hpp"
 #include "tool_render.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <set>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/codes/code_marks.hpp"
 #include "marker/codes/code_spec.hpp"
 

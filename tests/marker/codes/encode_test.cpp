@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/codes/code_data.hpp"
 #include "marker/codes/code_spec.hpp"
 #include "marker/codes/gs1_text.hpp"

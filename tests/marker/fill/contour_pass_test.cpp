@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "marker/cnc/flatten.hpp"
 #include "marker/fill/contour_passes.hpp"
 #include "marker/fill/fill.hpp"
+#include "marker/geometry/flatten.hpp"
 #include "tests/marker/fill/fill_test_support.hpp"
 
 namespace mark {

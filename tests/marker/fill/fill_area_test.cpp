@@ -5,10 +5,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "marker/cnc/clipper_paths.hpp"
 #include "marker/fill/fill_region.hpp"
 #include "marker/fill/hatch_lines.hpp"
 #include "marker/fill/hatch_order.hpp"
+#include "marker/geometry/clipper_paths.hpp"
 #include "tests/marker/fill/fill_test_support.hpp"
 
 namespace mark {

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
+#include "base/error.hpp"
 #include "fonts/catalog.hpp"
-#include "fonts/error.hpp"
 #include "marker/fill/fill.hpp"
 #include "marker/fill/fill_region.hpp"
 #include "marker/fill/hatch_order.hpp"

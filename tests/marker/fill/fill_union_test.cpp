@@ -7,7 +7,7 @@
 #include <cmath>
 #include <memory>
 
-#include "driver/sim_scanner.hpp"
+#include "driver/sim/sim_scanner.hpp"
 #include "marker/fill/fill.hpp"
 #include "marker/fill/fill_region.hpp"
 #include "marker/job/head_pen.hpp"

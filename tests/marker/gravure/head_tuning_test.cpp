@@ -7,12 +7,12 @@
 
 #include <cmath>
 
-#include "driver/sim_stylus_head.hpp"
-#include "fonts/error.hpp"
+#include "base/error.hpp"
+#include "driver/sim/sim_stylus_head.hpp"
 #include "marker/gravure/auto_tune.hpp"
 #include "marker/gravure/biquad_cascade.hpp"
 #include "marker/gravure/head_design.hpp"
-#include "marker/gravure/head_fit.hpp"
+#include "marker/gravure/stylus_head_fit.hpp"
 
 namespace mark {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "driver/sim_stylus_head.hpp"
-#include "marker/gravure/head_response.hpp"
+#include "driver/sim/sim_stylus_head.hpp"
+#include "marker/gravure/stylus_head_response.hpp"
 
 namespace mark {
 namespace {

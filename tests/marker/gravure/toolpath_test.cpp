@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "driver/stylus_cells.hpp"
+#include "driver/sim/stylus_cells.hpp"
 #include "marker/gravure/cubic_spline.hpp"
 #include "marker/gravure/stylus_toolpath.hpp"
 

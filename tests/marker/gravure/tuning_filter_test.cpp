@@ -9,7 +9,7 @@
 #include <numbers>
 #include <vector>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/gravure/biquad_cascade.hpp"
 #include "marker/gravure/head_design.hpp"
 #include "marker/gravure/tuning_filter.hpp"

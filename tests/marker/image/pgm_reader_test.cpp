@@ -5,7 +5,7 @@
 #include <random>
 #include <string>
 
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 #include "marker/image/gray_image.hpp"
 
 namespace mark::test {

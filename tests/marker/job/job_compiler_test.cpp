@@ -5,8 +5,8 @@
 
 #include <algorithm>
 
+#include "base/error.hpp"
 #include "fonts/catalog.hpp"
-#include "fonts/error.hpp"
 #include "marker/job/device_program.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job_compiler.hpp"

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "../cli_runner.hpp"
-#include "fonts/error.hpp"
+#include "base/error.hpp"
 
 namespace mark {
 namespace {

@@ -23,7 +23,7 @@
 #include <sstream>
 #include <thread>
 
-#include "marker/job/part_run.hpp"
+#include "marker/production/part_run.hpp"
 #include "marker/store/digest.hpp"
 #include "marker/store/utc_time.hpp"
 #include "store_test_support.hpp"

@@ -12,7 +12,7 @@
 #include <cstdio>
 
 #include "driver/lmc/usb_discovery.hpp"
-#include "driver/quality_class.hpp"
+#include "driver/sim/quality_class.hpp"
 #include "fonts/catalog.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/intended_strokes.hpp"

@@ -1,0 +1,43 @@
+#include "driver/sim/mark_response.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+namespace mark {
+namespace {
+
+double peak(double speed_mm_s, double w) { return std::sqrt(2 / std::numbers::pi) / (w * speed_mm_s); }
+
+void require(const char* what, double v, double lo, double hi, const char* unit) {
+  if (std::isfinite(v) && v >= lo && v <= hi) return;
+  std::ostringstream s;
+  s << what << " " << v << " " << unit << " is outside " << lo << " .. " << hi << " " << unit;
+  throw std::invalid_argument(s.str());
+}
+
+}  // namespace
+
+double MarkResponse::threshold_s_mm2() const {
+  const double w = beam_radius_mm(), r = reference_width_mm / 2;
+  return peak(reference_speed_mm_s, w) * std::exp(-2 * r * r / (w * w));
+}
+
+double MarkResponse::line_width_mm(double speed_mm_s) const {
+  const double w = beam_radius_mm();
+  const double ratio = peak(speed_mm_s, w) / threshold_s_mm2();
+  return ratio <= 1 ? 0.0 : 2 * w * std::sqrt(std::log(ratio) / 2);
+}
+
+double MarkResponse::vanishing_speed_mm_s() const {
+  return std::sqrt(2 / std::numbers::pi) / (beam_radius_mm() * threshold_s_mm2());
+}
+
+void check_mark_response(const MarkResponse& r) {
+  require("spot diameter", r.spot_diameter_mm, 0.001, 5, "mm");
+  require("reference speed", r.reference_speed_mm_s, 1, 100000, "mm/s");
+  require("reference line width", r.reference_width_mm, 0.001, 3 * r.spot_diameter_mm, "mm");
+}
+
+}  // namespace mark

@@ -1,0 +1,197 @@
+#include "driver/sim/quality.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include "driver/sim/segment_grid.hpp"
+
+namespace mark {
+namespace {
+
+constexpr double fine_cell_mm = 0.025;
+constexpr int fine_rings = static_cast<int>(1.0 / fine_cell_mm);  // 1 mm; beyond, the coarse grid
+constexpr double coarse_cell_mm = 1.0;
+constexpr double no_median_ratio = 1e9;  // reported when most of the strokes got no dose
+
+struct Stroke {
+  std::uint32_t first_segment;
+  std::uint32_t last_segment;
+  bool closed;
+};
+
+// A point every ≤ step along the intended strokes (midpoints of equal pieces), its share of the
+// stroke length, and the dose an ideal constant-speed mark leaves in the window around it.
+struct StrokeSample {
+  Vec2 p;
+  double weight;
+  double ideal_dose = 0;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+}  // namespace
+
+struct QualityReference::Data {
+  QualityOptions options;
+  double pixel_mm;
+  std::vector<Segment> segments;
+  std::vector<Stroke> strokes;
+  std::vector<std::uint32_t> stroke_of_segment;
+  std::vector<StrokeSample> samples;
+  SegmentGrid fine{{}, fine_cell_mm};
+  SegmentGrid coarse{{}, coarse_cell_mm};
+
+  void collect(const std::vector<std::vector<Vec2>>& polylines) {
+    const double step = options.sample_step_mm;
+    for (const auto& line : polylines) {
+      if (line.empty()) continue;
+      const auto first = static_cast<std::uint32_t>(segments.size());
+      const auto stroke = static_cast<std::uint32_t>(strokes.size());
+      // A single point is a dot: one zero-length segment.
+      const std::size_t n = std::max<std::size_t>(line.size(), 2);
+      for (std::size_t i = 1; i < n; ++i) {
+        const Vec2 a = line[std::min(i - 1, line.size() - 1)], b = line[std::min(i, line.size() - 1)];
+        segments.push_back({a, b});
+        stroke_of_segment.push_back(stroke);
+        const double len = norm(b - a);
+        const int pieces = std::max(1, static_cast<int>(std::ceil(len / step)));
+        for (int k = 0; k < pieces; ++k)
+          samples.push_back({a + ((k + 0.5) / pieces) * (b - a), len / pieces});
+      }
+      const bool closed = line.size() > 2 && norm(line.front() - line.back()) < 1e-9;
+      strokes.push_back({first, static_cast<std::uint32_t>(segments.size() - 1), closed});
+    }
+  }
+
+  void prepare_ideal_dose() {
+    DoseRaster ideal(pixel_mm);
+    for (const Segment& seg : segments)
+      ideal.deposit_segment(seg.a, seg.b, std::max(norm(seg.b - seg.a), 1e-9));
+    for (StrokeSample& s : samples) s.ideal_dose = ideal.sum_disc(s.p, options.dose_window_mm);
+  }
+
+  // Nearest intended segment to p, of any stroke, or only of stroke `only` when given.
+  SegmentGrid::Nearest nearest(Vec2 p, std::optional<std::uint32_t> only = std::nullopt) const {
+    std::uint32_t first = 0, last = std::numeric_limits<std::uint32_t>::max();
+    if (only) first = strokes[*only].first_segment, last = strokes[*only].last_segment;
+    SegmentGrid::Nearest n = fine.nearest(p, fine_rings, first, last);
+    if (std::isinf(n.distance)) n = coarse.nearest(p, 1 << 20, first, last);
+    return n;
+  }
+
+  // The stroke a lit run marks: the one nearest to most of its points (ties: the lower index).
+  std::uint32_t stroke_marked_by(const std::vector<SegmentGrid::Nearest>& nearest_any,
+                                 std::vector<std::uint32_t>& ids) const {
+    ids.clear();
+    for (const SegmentGrid::Nearest& n : nearest_any) ids.push_back(stroke_of_segment[n.segment]);
+    std::sort(ids.begin(), ids.end());
+    std::uint32_t best = ids.front();
+    std::size_t best_count = 0;
+    for (std::size_t i = 0, j = 0; i < ids.size(); i = j) {
+      while (j < ids.size() && ids[j] == ids[i]) ++j;
+      if (j - i > best_count) best = ids[i], best_count = j - i;
+    }
+    return best;
+  }
+
+  // How far a lit point lies beyond the end of an open stroke, along the stroke's end direction.
+  double overshoot_mm(const SegmentGrid::Nearest& n) const {
+    const Stroke& s = strokes[stroke_of_segment[n.segment]];
+    if (s.closed) return 0;
+    const Segment& seg = segments[n.segment];
+    const double len = norm(seg.b - seg.a);
+    double beyond = 0;
+    if (n.segment == s.first_segment && n.t < 0) beyond = std::max(beyond, -n.t * len);
+    if (n.segment == s.last_segment && n.t > 1) beyond = std::max(beyond, (n.t - 1) * len);
+    return beyond;
+  }
+};
+
+QualityReference::QualityReference(const std::vector<std::vector<Vec2>>& intended_polylines,
+                                   QualityOptions options, double pixel_mm)
+    : data_(std::make_unique<Data>()) {
+  Data& d = *data_;
+  d.options = options;
+  d.pixel_mm = pixel_mm;
+  d.collect(intended_polylines);
+  d.fine = SegmentGrid(d.segments, fine_cell_mm);
+  d.coarse = SegmentGrid(d.segments, coarse_cell_mm);
+  d.prepare_ideal_dose();
+}
+
+QualityReference::~QualityReference() = default;
+QualityReference::QualityReference(QualityReference&&) noexcept = default;
+QualityReference& QualityReference::operator=(QualityReference&&) noexcept = default;
+
+Quality QualityReference::evaluate(const LitPaths& lit, const DoseRaster& dose) const {
+  const Data& d = *data_;
+  if (std::abs(dose.pixel_mm() - d.pixel_mm) > 1e-12)
+    throw std::invalid_argument("quality: dose raster pixel differs from the reference's");
+  Quality q;
+  if (d.samples.empty()) return q;
+
+  // Deviation and overshoot of every lit position, measured against the stroke its lit run
+  // marks: a beam that cuts across to a neighbouring stroke is off its own stroke, however close
+  // it passes to another.
+  double sum_sq = 0, worst = 0, overshoot = 0;
+  std::vector<SegmentGrid::Nearest> nearest_any;
+  std::vector<std::uint32_t> ids;
+  for (const auto& run : lit.runs) {
+    if (run.empty()) continue;
+    nearest_any.clear();
+    for (const Vec2& p : run) nearest_any.push_back(d.nearest(p));
+    const std::uint32_t stroke = d.stroke_marked_by(nearest_any, ids);
+    for (std::size_t i = 0; i < run.size(); ++i) {
+      const SegmentGrid::Nearest n = d.stroke_of_segment[nearest_any[i].segment] == stroke
+                                         ? nearest_any[i]
+                                         : d.nearest(run[i], stroke);
+      worst = std::max(worst, n.distance);
+      sum_sq += n.distance * n.distance;
+      overshoot = std::max(overshoot, d.overshoot_mm(n));
+      ++q.lit_points;
+    }
+  }
+  if (q.lit_points == 0) return q;
+  q.max_deviation_um = worst * 1e3;
+  q.rms_deviation_um = std::sqrt(sum_sq / static_cast<double>(q.lit_points)) * 1e3;
+  q.overshoot_um = overshoot * 1e3;
+
+  // Coverage: intended length within the radius of a lit path (segments between lit points).
+  std::vector<Segment> lit_segments;
+  lit_segments.reserve(q.lit_points);
+  for (const auto& run : lit.runs)
+    for (std::size_t i = 0; i < run.size(); ++i) lit_segments.push_back({run[i == 0 ? 0 : i - 1], run[i]});
+  const double radius = d.options.coverage_radius_mm;
+  const SegmentGrid lit_grid(std::move(lit_segments), std::max(radius, fine_cell_mm));
+  double covered = 0, total = 0;
+  for (const StrokeSample& s : d.samples) {
+    total += s.weight;
+    if (lit_grid.any_within(s.p, radius)) covered += s.weight;
+  }
+  q.coverage = total > 0 ? covered / total : 0;
+
+  // Dose along the strokes relative to the ideal constant-speed mark of the same strokes.
+  std::vector<double> ratio;
+  ratio.reserve(d.samples.size());
+  for (const StrokeSample& s : d.samples)
+    if (s.ideal_dose > 0) ratio.push_back(dose.sum_disc(s.p, d.options.dose_window_mm) / s.ideal_dose);
+  const double mid = median(ratio);
+  const double top = ratio.empty() ? 0 : *std::max_element(ratio.begin(), ratio.end());
+  q.dose_ratio_max = mid > 0 ? top / mid : (top > 0 ? no_median_ratio : 0);
+  return q;
+}
+
+Quality evaluate_quality(const std::vector<std::vector<Vec2>>& intended_polylines,
+                         const LitPaths& lit, const DoseRaster& dose, QualityOptions options) {
+  return QualityReference(intended_polylines, options, dose.pixel_mm()).evaluate(lit, dose);
+}
+
+}  // namespace mark

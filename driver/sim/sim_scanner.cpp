@@ -1,0 +1,354 @@
+#include "driver/sim/sim_scanner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "driver/device_error.hpp"
+
+namespace mark {
+namespace {
+
+// Dose can land away from the planned lit path by the head's lag (up to about v·τ where a
+// strategy cuts a corner) plus the bilinear splat; tiles within this margin are sized up front.
+double dose_margin_mm(const JobHeader& header, const HeadModel& head) {
+  double fastest = 0;
+  for (const DevicePen& p : header.pens) fastest = std::max(fastest, p.mark_speed_mm_s);
+  if (fastest <= 0) fastest = head.max_speed_mm_s;
+  return 2 * std::min(fastest, head.max_speed_mm_s) * head.tau_s + 0.05;
+}
+
+double polyline_length(const std::vector<Vec2>& line) {
+  double len = 0;
+  for (std::size_t i = 1; i < line.size(); ++i) len += norm(line[i] - line[i - 1]);
+  return len;
+}
+
+}  // namespace
+
+SimScanner::SimScanner(SimScannerOptions options)
+    : options_(std::move(options)), dose_(options_.pixel_mm) {
+  const HeadModel& h = options_.head;
+  if (!(options_.tick_s > 0)) throw DeviceError("simulated scanner: tick must be positive");
+  if (options_.substeps < 1) throw DeviceError("simulated scanner: substeps must be at least 1");
+  if (!(h.tau_s > 0) || !(h.max_speed_mm_s > 0) || !(h.max_accel_mm_s2 > 0) || !(h.field_mm > 0))
+    throw DeviceError("simulated scanner: head " + h.name +
+                      " needs positive tau, speed and acceleration limits and field");
+}
+
+DeviceDescription SimScanner::describe() const {
+  DeviceDescription d;
+  d.name = "sim " + options_.head.name;
+  d.level = DeviceLevel::samples;
+  d.field_mm = options_.head.field_mm;
+  d.tick_s = options_.tick_s;
+  d.arcs = false;
+  d.max_speed_mm_s = options_.head.max_speed_mm_s;
+  d.laser_settings = true;
+  d.fifo_samples = 0;
+  return d;
+}
+
+void SimScanner::start_job() {
+  trail_.flush();
+  dose_ = DoseRaster(options_.pixel_mm);
+  lit_points_.clear();
+  lit_starts_.clear();
+  lit_.runs.clear();
+  lit_stale_ = false;
+  trace_.clear();
+  dose_scale_ = laser_.power_pct / 100;
+  pulses_.begin(laser_.frequency_khz, options_.head.spot_diameter_um);
+  samples_ = 0;
+  was_lit_ = false;
+  progress_.store(0, std::memory_order_relaxed);
+  state_.store(DeviceState::running, std::memory_order_release);
+}
+
+void SimScanner::begin_job(const JobHeader& header) {
+  const DeviceState s = state_.load(std::memory_order_acquire);
+  if (s != DeviceState::idle)
+    throw DeviceFaultError({FaultCategory::device,
+                            "simulated scanner (" + options_.head.name + "): begin_job while " +
+                                std::string(to_string(s)) + "; reset() it first",
+                            0});
+  if (header.field_mm > options_.head.field_mm * (1 + 1e-12)) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg,
+                  "simulated scanner (%s): the job's field %.3f mm is larger than the head's "
+                  "%.3f mm",
+                  options_.head.name.c_str(), header.field_mm, options_.head.field_mm);
+    throw DeviceFaultError({FaultCategory::out_of_field, msg, 0});
+  }
+  const LaserSettings laser = header.pens.empty() ? LaserSettings{} : header.pens.front().laser;
+  if (!(laser.power_pct >= 0 && laser.power_pct <= 100) || !(laser.frequency_khz > 0) ||
+      !std::isfinite(laser.frequency_khz)) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg,
+                  "simulated scanner (%s): the pen's power %g %% or pulse frequency %g kHz is "
+                  "outside 0–100 %% / above 0 kHz",
+                  options_.head.name.c_str(), laser.power_pct, laser.frequency_khz);
+    throw DeviceFaultError({FaultCategory::device, msg, 0});
+  }
+  laser_ = laser;
+  start_job();
+
+  // Size everything the drain thread will touch, so write() never allocates.
+  const double margin = dose_margin_mm(header, options_.head);
+  double lit_length = 0;
+  for (const auto& line : header.lit_paths) {
+    dose_.reserve_along(line, margin);
+    lit_length += polyline_length(line);
+  }
+  if (options_.record_lit_paths) {
+    // A point is kept every lit_path_spacing along the beam plus the ends of each run; the lit
+    // beam path is about as long as the planned one. Twice that, and runs for flicker.
+    const std::size_t runs = 4 * header.lit_paths.size() + 64;
+    lit_starts_.reserve(runs);
+    lit_points_.reserve(static_cast<std::size_t>(2 * lit_length / options_.lit_path_spacing_mm) +
+                        4 * runs + 1024);
+  }
+  if (options_.trace) trace_.reserve(header.expected_samples + 1024);
+}
+
+DeviceReport SimScanner::end_job() {
+  trail_.flush();
+  DeviceReport r;
+  {
+    std::lock_guard<std::mutex> lock(fault_mutex_);
+    r.fault = fault_;
+  }
+  DeviceState s = state_.load(std::memory_order_acquire);
+  if (s == DeviceState::running || s == DeviceState::idle)
+    s = halted() ? DeviceState::aborted : DeviceState::done;
+  if (r.fault) s = DeviceState::failed;
+  state_.store(s, std::memory_order_release);
+  r.outcome = s;
+  r.samples_out = samples_;
+  r.device_time_s = device_time_s();
+  const PulseFigures p = pulses_.figures();
+  r.figures = {{"samples", static_cast<double>(samples_)},
+               {"device_time_s", device_time_s()},
+               {"dose_tiles", static_cast<double>(dose_.tiles())},
+               {"power_pct", laser_.power_pct},
+               {"frequency_khz", laser_.frequency_khz},
+               {"pulses", static_cast<double>(p.pulses)},
+               {"pulse_spacing_um", p.spacing_max_um},
+               {"pulse_spacing_mean_um", p.spacing_mean_um},
+               {"pulse_overlap_fraction", p.overlap()}};
+  return r;
+}
+
+void SimScanner::abort() noexcept {
+  abort_requested_.store(true, std::memory_order_release);
+  laser_on_.store(false, std::memory_order_release);
+  DeviceState s = DeviceState::running;
+  state_.compare_exchange_strong(s, DeviceState::aborted, std::memory_order_acq_rel);
+}
+
+DeviceStatus SimScanner::status() const {
+  DeviceStatus st;
+  st.state = state_.load(std::memory_order_acquire);
+  st.position = {pos_x_.load(std::memory_order_relaxed), pos_y_.load(std::memory_order_relaxed)};
+  st.laser_on = laser_on_.load(std::memory_order_relaxed);
+  st.progress = progress_.load(std::memory_order_relaxed);
+  std::lock_guard<std::mutex> lock(fault_mutex_);
+  st.fault = fault_;
+  return st;
+}
+
+void SimScanner::reset() {
+  trail_.flush();
+  halted_.store(false, std::memory_order_release);
+  abort_requested_.store(false, std::memory_order_release);
+  laser_cmd_ = false;
+  power_ = 0;
+  was_lit_ = false;
+  {
+    std::lock_guard<std::mutex> lock(fault_mutex_);
+    fault_.reset();
+  }
+  state_.store(DeviceState::idle, std::memory_order_release);
+}
+
+void SimScanner::fail(DeviceFault fault) {
+  halt();
+  {
+    std::lock_guard<std::mutex> lock(fault_mutex_);
+    fault_ = fault;
+  }
+  state_.store(DeviceState::failed, std::memory_order_release);
+  throw DeviceFaultError(std::move(fault));
+}
+
+void SimScanner::check_block(std::span<const ScanSample> block) const {
+  const double half = options_.head.half_field_mm();
+  for (std::size_t i = 0; i < block.size(); ++i) {
+    const double c[2] = {block[i].x_mm, block[i].y_mm};
+    for (int a = 0; a < 2; ++a) {
+      if (std::isfinite(c[a]) && std::abs(c[a]) <= half) continue;
+      char msg[200];
+      std::snprintf(msg, sizeof msg,
+                    "simulated scanner (%s): sample %llu has %c = %.4f mm, outside the field "
+                    "±%.3f mm; laser halted",
+                    options_.head.name.c_str(),
+                    static_cast<unsigned long long>(samples_ + i), a == 0 ? 'x' : 'y', c[a], half);
+      throw DeviceFaultError({FaultCategory::out_of_field, msg, samples_ + i});
+    }
+  }
+}
+
+void SimScanner::write(std::span<const ScanSample> block) {
+  if (halted_.load(std::memory_order_acquire) || abort_requested_.load(std::memory_order_acquire)) {
+    halt();
+    throw DeviceError("simulated scanner (" + options_.head.name + "): halted, laser off");
+  }
+  const DeviceState state = state_.load(std::memory_order_acquire);
+  if (state == DeviceState::idle) {  // implicit job: full power, default frequency
+    laser_ = LaserSettings{};
+    start_job();
+  }
+  if (state != DeviceState::idle && state != DeviceState::running)
+    throw DeviceError("simulated scanner (" + options_.head.name + "): the job has ended (" +
+                      std::string(to_string(state)) + "); reset() it first");
+  try {
+    check_block(block);
+  } catch (const DeviceFaultError& e) {
+    fail(e.fault());
+  }
+  for (const ScanSample& s : block) {
+    if (samples_ == options_.fault_at) {
+      char msg[160];
+      std::snprintf(msg, sizeof msg,
+                    "simulated scanner (%s): injected device fault at sample %llu; laser halted",
+                    options_.head.name.c_str(), static_cast<unsigned long long>(samples_));
+      trail_.flush();
+      fail({FaultCategory::device, msg, samples_});
+    }
+    follow(s);
+  }
+  trail_.flush();  // the raster is complete after every block
+  publish_status();
+}
+
+void SimScanner::publish_status() {
+  progress_.store(samples_, std::memory_order_relaxed);
+  pos_x_.store(static_cast<float>(axis_[0].x), std::memory_order_relaxed);
+  pos_y_.store(static_cast<float>(axis_[1].x), std::memory_order_relaxed);
+  laser_on_.store(laser_cmd_ && power_ > 0, std::memory_order_relaxed);
+}
+
+void SimScanner::halt() noexcept {
+  trail_.flush();
+  halted_.store(true, std::memory_order_release);
+  laser_cmd_ = false;
+  power_ = 0;
+  lit_ref_ = 0;
+  was_lit_ = false;
+  laser_on_.store(false, std::memory_order_release);
+}
+
+// One sub-step of one axis: the servo asks for the velocity that closes the tracking error in
+// τ (first order) or the acceleration of the (ωn, ζ) loop (second order); the mirror can
+// deliver neither faster than the speed and acceleration limits. The first-order demand also
+// respects the braking curve √(2·a·|e|) so a saturated jump stops without overshoot.
+void SimScanner::step_axis(Axis& a, double cmd, double dt) const {
+  const HeadModel& h = options_.head;
+  const double e = cmd - a.x;
+  const double dv_max = h.max_accel_mm_s2 * dt;
+  if (h.second_order) {
+    const double wn = h.omega_n();
+    const double acc = wn * wn * e - 2 * h.zeta * wn * a.v;
+    a.v += std::clamp(acc * dt, -dv_max, dv_max);
+  } else {
+    double want = e / h.tau_s;
+    const double brake = std::sqrt(2 * h.max_accel_mm_s2 * std::abs(e));
+    want = std::clamp(want, -brake, brake);
+    a.v += std::clamp(want - a.v, -dv_max, dv_max);
+  }
+  a.v = std::clamp(a.v, -h.max_speed_mm_s, h.max_speed_mm_s);
+  a.x += a.v * dt;
+}
+
+void SimScanner::follow(const ScanSample& s) {
+  const int n = options_.substeps;
+  const double dt = options_.tick_s / n;
+  const Vec2 from = cmd_, to{s.x_mm, s.y_mm};
+  const double target_power = s.laser ? s.power / 255.0 : 0.0;
+  // First-order laser power p → target: after a sub-step p moves by `rise` of the gap, and its
+  // mean over the sub-step is target + (p − target)·`mean_share` (exact; both 1/0 when instant).
+  const double tr = options_.laser_rise_s;
+  const double rise = tr > 0 ? 1 - std::exp(-dt / tr) : 1.0;
+  const double mean_share = tr > 0 ? tr / dt * rise : 0.0;
+  const double t0 = static_cast<double>(samples_) * options_.tick_s;
+  laser_cmd_ = s.laser;
+  // "Lit" is relative to the power the laser was last commanded to while on: a pen at low power,
+  // or power scaled with speed along a stroke, still marks; after laser-off the falling power
+  // counts as lit until it is below half of the last on-power.
+  if (target_power > 0) lit_ref_ = target_power;
+
+  for (int j = 0; j < n; ++j) {
+    // Command at the start of this sub-step (first-order hold from the previous sample).
+    const Vec2 cmd = from + (static_cast<double>(j) / n) * (to - from);
+    const Vec2 p0 = beam();
+    step_axis(axis_[0], cmd.x, dt);
+    step_axis(axis_[1], cmd.y, dt);
+    const Vec2 p1 = beam();
+    pulses_.step(p0, p1, dt, target_power > 0);
+
+    const double mean_power = target_power + (power_ - target_power) * mean_share;
+    power_ += (target_power - power_) * rise;
+    if (mean_power > 0)
+      trail_.add(p0, p1, dose_scale_ * mean_power * dt);
+    else
+      trail_.flush();
+    record_lit(p0, p1, lit_ref_ > 0 && power_ >= 0.5 * lit_ref_);
+    if (options_.probe) options_.probe(t0 + (j + 1) * dt, p1, power_);
+  }
+  cmd_ = to;
+  ++samples_;
+  if (options_.trace)
+    trace_.push_back({static_cast<double>(samples_) * options_.tick_s, s.x_mm, s.y_mm, s.laser,
+                      static_cast<float>(axis_[0].x), static_cast<float>(axis_[1].x)});
+}
+
+void SimScanner::record_lit(Vec2 p0, Vec2 p1, bool lit) {
+  if (!options_.record_lit_paths) return;
+  if (!lit) {
+    was_lit_ = false;
+    return;
+  }
+  lit_stale_ = true;
+  if (!was_lit_) {
+    lit_starts_.push_back(lit_points_.size());
+    lit_points_.push_back(p0);
+    lit_points_.push_back(p1);
+    was_lit_ = true;
+    return;
+  }
+  // Keep the newest position as the run's last point; keep a point behind it only once it is
+  // spacing away from its predecessor, so a dwell does not pile up points.
+  const std::size_t run_size = lit_points_.size() - lit_starts_.back();
+  if (run_size >= 2 &&
+      norm(lit_points_.back() - lit_points_[lit_points_.size() - 2]) < options_.lit_path_spacing_mm)
+    lit_points_.back() = p1;
+  else
+    lit_points_.push_back(p1);
+}
+
+const LitPaths& SimScanner::lit_paths() const {
+  if (lit_stale_) {
+    lit_.runs.clear();
+    for (std::size_t r = 0; r < lit_starts_.size(); ++r) {
+      const std::size_t a = lit_starts_[r];
+      const std::size_t b = r + 1 < lit_starts_.size() ? lit_starts_[r + 1] : lit_points_.size();
+      lit_.runs.emplace_back(lit_points_.begin() + static_cast<std::ptrdiff_t>(a),
+                             lit_points_.begin() + static_cast<std::ptrdiff_t>(b));
+    }
+    lit_stale_ = false;
+  }
+  return lit_;
+}
+
+}  // namespace mark

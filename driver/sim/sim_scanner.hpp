@@ -1,0 +1,144 @@
+#pragma once
+// The simulated scanner, the default device: two mirror axes that follow the commanded samples
+// through the head model (first-order lag τ — or second-order (ωn, ζ) — plus per-axis speed and
+// acceleration limits), integrated in sub-steps of the tick; a laser with an optional rise time;
+// the dose the beam leaves along its real path; the lit beam path for quality figures.
+//
+// Timing convention: sample k is the command for the end of tick k (device time (k+1)·tick);
+// during tick k the command moves linearly from sample k−1 to sample k (first-order hold, so a
+// constant-speed ramp lags by exactly τ·v) and the laser is as sample k says. Device time =
+// samples × tick. The beam starts at rest at the field centre with the laser off.
+//
+// A sample-level Device (driver/device.hpp). begin_job() clears the previous job's dose and lit
+// paths and sizes everything the job needs — dose tiles along the header's lit paths, the lit
+// path and trace buffers — so write(), on the drain thread, does not allocate. Samples written
+// outside begin_job/end_job start an implicit job with nothing sized (tests that use the
+// scanner as a bare sink, the emulated board).
+//
+// Laser: the dose is time × the sample's power × the pen's power (JobHeader::pens[0].laser
+// .power_pct; 100 % for an implicit job), so half the power leaves half the dose; the lit test
+// (where the beam marked) does not depend on the pen's power. The pulse train at the pen's
+// frequency gives the pulse spacing along the lit path and its overlap against the head's spot
+// diameter (driver/sim/pulse_train.hpp).
+//
+// Laser safety: a block holding any sample outside the field (or not finite) is refused as a
+// whole: the scanner halts (laser off) and throws DeviceFaultError (out_of_field) naming the
+// sample and coordinate. After halt() or abort() every further write throws; the laser stays
+// off until reset().
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "driver/device.hpp"
+#include "driver/sim/dose_raster.hpp"
+#include "driver/sim/dose_trail.hpp"
+#include "driver/sim/head_model.hpp"
+#include "driver/sim/lit_paths.hpp"
+#include "driver/sim/pulse_train.hpp"
+#include "driver/sim/sim_trace.hpp"
+#include "driver/vec2.hpp"
+#include "ringbuffer/scan_sample.hpp"
+
+namespace mark {
+
+struct SimScannerOptions {
+  HeadModel head = head_sl10();
+  double tick_s = 10e-6;            // time per sample
+  int substeps = 10;                // integration steps per tick (1 µs at the default tick)
+  double laser_rise_s = 0;          // first-order rise/fall time constant of the laser power; 0 = instant
+  double pixel_mm = 0.005;          // dose raster pixel
+  bool record_lit_paths = true;     // keep the lit beam path (for quality figures)
+  double lit_path_spacing_mm = 0.004;  // lit points kept about this far apart (≤ 1 per sub-step)
+  bool trace = false;               // keep one SimTraceRow per sample (marker mark --trace)
+  // Fault injection (tests, `marker mark --inject fault@N`): the device reports a fault of its
+  // own at this sample of a job and halts.
+  std::uint64_t fault_at = UINT64_MAX;
+  // Called at every sub-step with the device time, beam position and effective laser power
+  // (0..1). For validation tests; leave empty otherwise.
+  std::function<void(double t_s, Vec2 beam, double power)> probe;
+};
+
+class SimScanner : public SampleDevice<ScanSample> {
+ public:
+  explicit SimScanner(SimScannerOptions options = {});
+
+  // Device
+  DeviceDescription describe() const override;
+  void begin_job(const JobHeader& header) override;
+  DeviceReport end_job() override;
+  void abort() noexcept override;
+  DeviceStatus status() const override;
+  void reset() override;
+
+  // Sink (the drain thread)
+  void write(std::span<const ScanSample> block) override;
+  void halt() noexcept override;
+
+  std::uint64_t samples() const { return samples_; }  // in this job
+  double device_time_s() const { return static_cast<double>(samples_) * options_.tick_s; }
+  bool halted() const { return halted_.load(std::memory_order_acquire); }
+  bool laser_commanded() const { return laser_cmd_; }  // laser gate as last commanded
+  double laser_power() const { return power_; }        // effective power now, 0..1
+  Vec2 beam() const { return {axis_[0].x, axis_[1].x}; }
+  Vec2 beam_velocity_mm_s() const { return {axis_[0].v, axis_[1].v}; }
+
+  const DoseRaster& dose() const { return dose_; }
+  // The lit runs of this job (assembled from the recording buffer on first use after a write).
+  const LitPaths& lit_paths() const;
+  // One row per sample of this job when options().trace is set.
+  const std::vector<SimTraceRow>& trace() const { return trace_; }
+  const SimScannerOptions& options() const { return options_; }
+  // The laser settings of this job (the header's first pen) and its pulse figures so far.
+  const LaserSettings& laser() const { return laser_; }
+  PulseFigures pulses() const { return pulses_.figures(); }
+
+ private:
+  struct Axis {
+    double x = 0;  // position, mm
+    double v = 0;  // velocity, mm/s
+  };
+  void start_job();
+  void check_block(std::span<const ScanSample> block) const;
+  void follow(const ScanSample& s);
+  void step_axis(Axis& a, double cmd, double dt) const;
+  void record_lit(Vec2 p0, Vec2 p1, bool lit);
+  [[noreturn]] void fail(DeviceFault fault);
+  void publish_status();
+
+  SimScannerOptions options_;
+  Axis axis_[2];
+  Vec2 cmd_{0, 0};           // previous command (start of the current tick)
+  bool laser_cmd_ = false;
+  double power_ = 0;         // effective laser power 0..1
+  double lit_ref_ = 0;       // power of the last lit sample: the lit test is relative to it
+  bool was_lit_ = false;
+  std::uint64_t samples_ = 0;
+  DoseRaster dose_;
+  DoseTrail trail_{dose_};
+  // Lit beam path as recorded on the drain thread: flat points and the index where each run
+  // starts, both reserved by begin_job.
+  std::vector<Vec2> lit_points_;
+  std::vector<std::size_t> lit_starts_;
+  mutable LitPaths lit_;
+  mutable bool lit_stale_ = false;
+  std::vector<SimTraceRow> trace_;
+  LaserSettings laser_;       // this job's pen
+  double dose_scale_ = 1;     // the pen's power, 0..1
+  PulseTrain pulses_;
+
+  // State shared with other threads (abort, status).
+  std::atomic<DeviceState> state_{DeviceState::idle};
+  std::atomic<bool> halted_{false};
+  std::atomic<bool> abort_requested_{false};
+  std::atomic<std::uint64_t> progress_{0};
+  std::atomic<float> pos_x_{0}, pos_y_{0};
+  std::atomic<bool> laser_on_{false};
+  mutable std::mutex fault_mutex_;  // guards fault_ (never taken on the sample path)
+  std::optional<DeviceFault> fault_;
+};
+
+}  // namespace mark

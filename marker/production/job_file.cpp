@@ -1,0 +1,312 @@
+#include "marker/production/job_file.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "base/error.hpp"
+#include "driver/device_error.hpp"
+#include "driver/lmc/lmc_spec.hpp"
+#include "marker/job/head_pen.hpp"
+#include "marker/limits/counter_limits.hpp"
+#include "marker/limits/layout_limits.hpp"
+#include "marker/limits/pen_limits.hpp"
+#include "marker/production/job_parse_context.hpp"
+#include "marker/production/json_reader.hpp"
+
+namespace mark {
+namespace {
+
+// Duplicate keys and absurd nesting are errors too (nlohmann would keep the last silently).
+struct StrictJson {
+  std::vector<std::set<std::string>> keys;
+  std::string duplicate;
+};
+
+nlohmann::json parse_strict(std::string_view text, const std::string& file) {
+  StrictJson strict;
+  const nlohmann::json::parser_callback_t cb = [&](int depth, nlohmann::json::parse_event_t event,
+                                                   nlohmann::json& parsed) {
+    using E = nlohmann::json::parse_event_t;
+    if (depth > 32) throw InputError(file + ": nested more than 32 levels deep");
+    if (event == E::object_start) strict.keys.emplace_back();
+    if (event == E::object_end && !strict.keys.empty()) strict.keys.pop_back();
+    if (event == E::key && !strict.keys.empty() && !strict.keys.back().insert(parsed.get<std::string>()).second &&
+        strict.duplicate.empty())
+      strict.duplicate = parsed.get<std::string>();
+    return true;
+  };
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text.begin(), text.end(), cb);
+  } catch (const nlohmann::json::exception& e) {
+    // A syntax error carries its byte; a number beyond a double (1e999) throws out_of_range,
+    // which does not, so that one is named without a line and column.
+    std::string where = file;
+    if (const auto* pe = dynamic_cast<const nlohmann::json::parse_error*>(&e)) {
+      std::size_t line = 1, col = 1;
+      for (std::size_t i = 0; i + 1 < pe->byte && i < text.size(); ++i) {
+        if (text[i] == '\n') ++line, col = 1;
+        else ++col;
+      }
+      where += ":" + std::to_string(line) + ":" + std::to_string(col);
+    }
+    std::string what = e.what();
+    // Drop nlohmann's "[json.exception.…] " tag and its "syntax error while parsing … at line 1: " lead.
+    if (const std::size_t colon = what.rfind(": "); colon != std::string::npos) what = what.substr(colon + 2);
+    else if (const std::size_t tag = what.find("] "); what.starts_with('[') && tag != std::string::npos)
+      what = what.substr(tag + 2);
+    throw InputError(where + ": not valid JSON: " + what);
+  }
+  if (!strict.duplicate.empty())
+    throw InputError(file + ": key \"" + strict.duplicate + "\" appears twice in one object");
+  return j;
+}
+
+HeadModel parse_head(JsonReader& top) {
+  const nlohmann::json* h = top.raw("head");
+  std::string model = "SL10";
+  std::optional<double> spot_um;
+  if (h && h->is_string()) {
+    model = h->get<std::string>();
+  } else if (h) {
+    JsonReader head = top.object("head");
+    model = head.string("model").value_or(model);
+    spot_um = head.number("spot_diameter_um", kSpotRange);
+    head.finish();
+  }
+  const auto found = find_head(model);
+  if (!found) {
+    std::string names;
+    for (const std::string& n : head_names()) names += (names.empty() ? "" : ", ") + n;
+    top.fail(h && h->is_object() ? "head.model" : "head", "\"" + model + "\" is not a head (" + names + ")");
+  }
+  HeadModel head = *found;
+  if (spot_um) head.spot_diameter_um = *spot_um;
+  return head;
+}
+
+CounterSpec parse_counter(JsonReader c, const std::string& name, const TimeZone& job_zone) {
+  CounterSpec s;
+  s.name = name;
+  s.start = c.integer("start", kCounterValueRange).value_or(1);
+  s.step = c.integer("step", kCounterStepRange).value_or(1);
+  s.limit = c.integer("limit", kCounterValueRange);
+  if (auto p = c.choice("at_limit", {"stop", "wrap"})) s.at_limit = *parse_end_policy(*p);
+  s.marks_per_serial = c.integer("marks_per_serial", kMarksPerSerialRange).value_or(1);
+  s.width = static_cast<int>(c.integer("width", kCounterWidthRange).value_or(0));
+  if (auto p = c.choice("padding", {"keep", "suppress", "blank"})) s.padding = *parse_padding(*p);
+  const std::optional<std::string> alphabet = c.choice("alphabet", {"decimal", "hex", "base36", "base33"});
+  const std::optional<std::string> digits = c.string("digits");
+  if (alphabet && digits) c.fail("digits", "give either \"alphabet\" or custom \"digits\", not both");
+  if (alphabet) s.alphabet = *Alphabet::named(*alphabet);
+  if (digits) s.alphabet = Alphabet::custom(*digits, c.file() + ": " + c.path_of("digits"));
+  if (auto r = c.choice("reset", {"never", "midnight", "shift"})) s.reset = *parse_reset_rule(*r);
+  s.time_zone = job_zone;
+  if (auto z = c.string("time_zone")) {
+    try {
+      s.time_zone = TimeZone::named(*z);
+    } catch (const InputError& e) {
+      c.fail("time_zone", e.what());
+    }
+  }
+  c.finish();
+  try {
+    s.validate(c.path());
+  } catch (const InputError& e) {
+    throw InputError(c.file() + ": " + e.what());
+  }
+  return s;
+}
+
+JobPen parse_pen(JsonReader p, const std::string& name, const HeadModel& head) {
+  JobPen pen;
+  pen.name = name;
+  CornerStrategy corner = CornerStrategy::blanking;
+  if (auto c = p.choice("corner", {"blanking", "delays", "none"})) corner = parse_corner_strategy(*c);
+  const double speed = p.number("speed_mm_s", 0.001, head.max_speed_mm_s, "mm/s").value_or(1000);
+  const double tick_us = p.number("tick_us", 1, head.max_tick_s() * 1e6, "µs").value_or(10);
+  Pen& m = pen.motion;
+  m = pen_for_head(head, corner, speed, tick_us * 1e-6);
+  m.jump_speed_mm_s = p.number("jump_speed_mm_s", 0.001, head.max_speed_mm_s, "mm/s").value_or(m.jump_speed_mm_s);
+  if (corner == CornerStrategy::blanking) m.join_speed_mm_s = m.jump_speed_mm_s;
+  auto us = [&](const char* key, double& field) {
+    if (auto v = p.number(key, 0, 1e6, "µs")) field = *v * 1e-6;
+  };
+  us("laser_on_delay_us", m.laser_on_delay_s);
+  us("laser_off_delay_us", m.laser_off_delay_s);
+  us("jump_delay_us", m.jump_delay_s);
+  us("mark_delay_us", m.mark_delay_s);
+  us("polygon_delay_us", m.polygon_delay_s);
+  if (auto v = p.number("jump_settle_um", 0, 1e6, "µm")) m.jump_settle_mm = *v * 1e-3;
+  m.blank_angle_deg = p.number("blank_angle_deg", 0, 180, "°").value_or(m.blank_angle_deg);
+  if (auto v = p.number("run_in_mm", kExtensionRange)) m.run_in_mm = *v;
+  m.min_run_in_mm = p.number("min_run_in_mm", kExtensionRange).value_or(m.min_run_in_mm);
+  m.run_out_mm = p.number("run_out_mm", kExtensionRange).value_or(m.run_out_mm);
+  if (auto v = p.number("settle_um", 0.001, 1000, "µm")) m.settle_mm = *v * 1e-3;
+  m.join_speed_mm_s = p.number("join_speed_mm_s", 0.001, head.max_speed_mm_s, "mm/s").value_or(m.join_speed_mm_s);
+  pen.laser.power_pct = p.number("power_pct", kPowerRange).value_or(pen.laser.power_pct);
+  pen.laser.frequency_khz = p.number("frequency_khz", kFrequencyRange).value_or(pen.laser.frequency_khz);
+  pen.laser.pulse_width_ns = p.number("pulse_width_ns", kPulseWidthRange).value_or(pen.laser.pulse_width_ns);
+  pen.passes = static_cast<int>(p.integer("passes", kPassesRange).value_or(1));
+  p.finish();
+  return pen;
+}
+
+void check_name(JsonReader& r, std::string_view key, const std::string& name, const char* what) {
+  if (name.empty()) r.fail(key, std::string("a ") + what + " needs a name");
+  for (char c : name)
+    if (c < 0x20 || c == '{' || c == '}' || c == ':')
+      r.fail(key, std::string("a ") + what + " name cannot hold control characters, braces or colons");
+}
+
+// "sim", or a board as --device names it: a station's job says which device it marks on.
+std::string parse_device(JsonReader& top) {
+  const std::optional<std::string> device = top.string("device");
+  if (!device || *device == "sim") return "sim";
+  try {
+    if (lmc::parse_lmc_spec(*device, "")) return *device;
+  } catch (const DeviceError& e) {
+    top.fail("device", e.what());
+  }
+  top.fail("device", "'" + *device + "' is not a device (sim: the simulated scanner; lmc, "
+                     "lmc:SERIAL, lmc-capture:FILE: a BJJCZ LMC board)");
+}
+
+}  // namespace
+
+std::map<std::string, CounterSpec> JobFile::used_counters() const {
+  std::map<std::string, CounterSpec> used;
+  for (const JobObject& o : objects)
+    for (const std::string& c : o.text_template().counters()) used.emplace(c, counters.at(c));
+  return used;
+}
+
+std::vector<std::string> JobFile::required_variables() const {
+  std::vector<std::string> names;
+  for (const JobObject& o : objects)
+    for (const std::string& v : o.text_template().variables())
+      if (!variables.count(v) && std::find(names.begin(), names.end(), v) == names.end())
+        names.push_back(v);
+  return names;
+}
+
+JobFile parse_job(std::string_view text, const std::string& source) {
+  const nlohmann::json j = parse_strict(text, source);
+  JsonReader top(j, source, "");
+  JobFile job;
+  job.source = source;
+  const std::optional<std::string> format = top.string("format");
+  if (!format) top.fail("format", "missing: a job file starts with \"format\": \"" + std::string(kJobFormat) + "\"");
+  if (*format != kJobFormat)
+    top.fail("format", "\"" + *format + "\" is not a format this program reads (" + std::string(kJobFormat) + ")");
+  job.job_name = top.string("name").value_or(std::filesystem::path(source).stem().string());
+  job.device = parse_device(top);
+  job.head = parse_head(top);
+  job.head.field_mm = top.number("field_mm", kFieldRange).value_or(job.head.field_mm);
+  if (auto z = top.string("time_zone")) {
+    try {
+      job.time_zone = TimeZone::named(*z);
+    } catch (const InputError& e) {
+      top.fail("time_zone", e.what());
+    }
+  }
+  if (const nlohmann::json* shifts = top.raw("shifts")) {
+    if (!shifts->is_array()) top.fail("shifts", "expected a list of {\"code\": …, \"start\": \"HH:MM\"}");
+    std::vector<Shift> list;
+    for (std::size_t i = 0; i < shifts->size(); ++i) {
+      JsonReader s((*shifts)[i], source, json_index("shifts", i));
+      Shift sh;
+      sh.code = s.string("code").value_or("");
+      if (sh.code.empty()) s.fail("code", "a shift needs a code");
+      const auto start = s.string("start");
+      if (!start) s.fail("start", "a shift needs its start time \"HH:MM\"");
+      sh.start_minute = parse_clock_time(*start, source + ": " + s.path_of("start"));
+      s.finish();
+      list.push_back(sh);
+    }
+    try {
+      job.shifts = ShiftTable(std::move(list));
+    } catch (const InputError& e) {
+      top.fail("shifts", e.what());
+    }
+  }
+  if (top.has("variables")) {
+    JsonReader vars = top.object("variables");
+    for (const auto& [k, v] : top.raw("variables")->items()) {
+      const std::optional<std::string> value = vars.string(k);
+      check_name(vars, k, k, "variable");
+      job.variables[k] = *value;
+    }
+  }
+  if (top.has("counters")) {
+    JsonReader counters = top.object("counters");
+    for (const auto& [k, v] : top.raw("counters")->items()) {
+      check_name(counters, k, k, "counter");
+      if (k == "date" || k == "var" || k == "shift")
+        counters.fail(k, "\"" + k + "\" is a field name of its own; call the counter something else");
+      job.counters.emplace(k, parse_counter(counters.object(k), k, job.time_zone));
+    }
+  }
+  if (top.has("pens")) {
+    JsonReader pens = top.object("pens");
+    for (const auto& [k, v] : top.raw("pens")->items()) {
+      check_name(pens, k, k, "pen");
+      job.pens.emplace(k, parse_pen(pens.object(k), k, job.head));
+    }
+  }
+  if (job.pens.empty()) top.fail("pens", "a job needs at least one pen");
+  const nlohmann::json* objects = top.raw("objects");
+  if (!objects || !objects->is_array() || objects->empty())
+    top.fail("objects", "a job needs a list of at least one object to mark");
+  const JobParseContext ctx{source, job.head.spot_diameter_um};
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < objects->size(); ++i) {
+    JsonReader o((*objects)[i], source, json_index("objects", i));
+    JobObject obj;
+    obj.name = o.string("name").value_or("");
+    check_name(o, "name", obj.name, "object");
+    if (!names.insert(obj.name).second) o.fail("name", "another object is called \"" + obj.name + "\"");
+    obj.kind = o.string("kind").value_or("text");
+    const std::optional<std::string> pen = o.string("pen");
+    if (pen) {
+      if (!job.pens.count(*pen)) o.fail("pen", "no pen named \"" + *pen + "\"");
+      obj.pen = *pen;
+    } else if (job.pens.size() == 1) {
+      obj.pen = job.pens.begin()->first;
+    } else {
+      o.fail("pen", "missing: the job has several pens, say which one draws this object");
+    }
+    obj.body = parse_object_body(obj.kind, o, ctx);
+    o.finish();
+    {
+      const TextTemplate& t = obj.text_template();
+      for (const std::string& c : t.counters())
+        if (!job.counters.count(c))
+          o.fail("template", "{" + c + "}: no counter named \"" + c + "\" in \"counters\"");
+      if (t.uses(FieldKind::shift) && job.shifts.empty())
+        o.fail("template", "{shift} needs the job's \"shifts\" (codes and start times)");
+    }
+    job.objects.push_back(std::move(obj));
+  }
+  for (const auto& [name, c] : job.counters)
+    if (c.reset == ResetRule::shift && job.shifts.empty())
+      top.fail("counters." + name + ".reset", "a reset at shift start needs the job's \"shifts\"");
+  top.finish();
+  return job;
+}
+
+JobFile read_job_file(const std::string& path, std::string* bytes) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the job file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  const std::string text = s.str();
+  if (text.size() > (16u << 20)) throw InputError(path + ": a job file is at most 16 MiB");
+  JobFile job = parse_job(text, path);
+  if (bytes) *bytes = text;
+  return job;
+}
+
+}  // namespace mark

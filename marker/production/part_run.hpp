@@ -1,0 +1,103 @@
+#pragma once
+// Marking the parts of a production job one after the other, on one device, with one serial
+// store. A part's life:
+//
+//   1. allocate — one store transaction renders every object's text from the counter values
+//      the part consumes, lays it out and plans it (only the characters that changed since the
+//      last part: JobCompiler), makes every refusal (a glyph missing, the field left), and
+//      commits the values with the audit row: durably, before the first sample reaches the
+//      device. A refusal rolls the transaction back: nothing consumed, nothing logged.
+//   2. mark — every object in file order with its own pen (motion and laser settings, passes),
+//      each as one device job (run_compiled_job). The first object that does not end `done`
+//      ends the part: the objects after it are not started.
+//   3. record — the part's outcome (done only if every object is done; else the aborted or
+//      failed object's outcome), with the device's figures and, on the simulated scanner, the
+//      quality and pulse figures. An aborted or failed part's numbers are void for good.
+//
+// A re-mark marks the texts of an earlier row again, in a row of its own linked to it, and
+// consumes no number.
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "marker/job/job.hpp"
+#include "marker/job/job_compiler.hpp"
+#include "marker/production/part_texts.hpp"
+#include "marker/store/serial_store.hpp"
+
+namespace mark {
+
+enum class PartPhase { allocating, marking, recording, finished };
+
+struct ObjectRun {
+  std::string name;
+  std::string pen;
+  std::string text;
+  bool started = false;  // false: an earlier object ended the part
+  JobResult result;      // when started (quality on the simulated scanner)
+};
+
+struct PartResult {
+  std::int64_t mark_id = 0;
+  std::optional<std::int64_t> remark_of;
+  std::vector<ObjectText> texts;                 // every object's rendered text
+  std::map<std::string, std::int64_t> serials;   // counter values consumed (a re-mark: the original's)
+  JobOutcome outcome = JobOutcome::done;
+  std::string message;  // aborted / failed: which object stopped where, and why
+  std::optional<std::size_t> stopped_object;     // its index
+  std::vector<ObjectRun> objects;
+  std::string device;                            // describe().name
+  double mark_time_s = 0;                        // device time over the objects
+  std::uint64_t samples = 0;
+  // On the simulated scanner: the worst figure of any object (class: the lowest object's), and
+  // the widest pulse spacing (with its overlap).
+  std::optional<Quality> quality;
+  std::optional<PulseFigures> pulses;
+
+  std::string text() const;  // the texts joined by new lines
+};
+
+struct PartOptions {
+  JobOptions job;  // for every object's device job (stop flag, injection, virtual time)
+  // Told at each step of a part with the values it consumed (so far): the kill test's probe.
+  std::function<void(PartPhase, const std::map<std::string, std::int64_t>& serials)> phase;
+};
+
+class PartRunner {
+ public:
+  // The job, its fonts, the device and the store are the caller's and outlive the runner.
+  // `context` is the station's (start_station has been called). Throws InputError when an
+  // object's pen cannot run on the device (a sample-level device has one clock).
+  PartRunner(const JobFile& job, const JobFonts& fonts, std::map<std::string, std::string> variables,
+             Device& device, SerialStore& store, MarkContext context);
+
+  // The next part: allocate, mark, record. Refusals before allocation throw InputError (nothing
+  // consumed); a device that cannot start throws after the part is recorded failed.
+  PartResult mark_next(SysTime now, const PartOptions& options);
+  // Row `original` marked again.
+  PartResult remark(std::int64_t original, SysTime now, const PartOptions& options);
+
+ private:
+  std::vector<CompiledJob> compile(const std::vector<ObjectText>& texts);
+  PartResult run(PartResult part, std::vector<CompiledJob> compiled, const PartOptions& options);
+  // Totals, the worst quality, the widest pulse spacing and the message of a part that stopped.
+  void summarise(PartResult& part) const;
+  void record(PartResult& part, const PartOptions& options);  // the outcome, in the store
+  Point device_position() const;
+
+  const JobFile& job_;
+  std::map<std::string, std::string> variables_;
+  Device& device_;
+  SerialStore& store_;
+  MarkContext context_;
+  std::map<std::string, CounterSpec> counters_;  // the ones the templates use
+  std::vector<JobCompiler> compilers_;           // one per object, in file order
+  // Where the device's mirrors are before the next part: each object is planned from where the
+  // one before it ended (its last command), the first from where the last part ended.
+  Point mirrors_{0, 0};
+};
+
+}  // namespace mark

@@ -21,6 +21,7 @@ namespace {
 class DepressionRs274 : public ::testing::TestWithParam<Case> {};
 
 TEST_P(DepressionRs274, RunsToTheEndAndCutsExactlyTheStrokes) {
+  REQUIRE_RS274();
   const auto [dialect, fit, variant] = GetParam();
   FigureSpec spec;
   spec.text = "DOLTSE";
@@ -69,6 +70,7 @@ TEST_P(DepressionRs274, RunsToTheEndAndCutsExactlyTheStrokes) {
 INSTANTIATE_TEST_SUITE_P(AllDialectsFitsVariants, DepressionRs274, all_cases(), case_name);
 
 TEST(DepressionRs274, InchProgramCutsTheSameStrokes) {
+  REQUIRE_RS274();
   FigureSpec spec;
   spec.fit = Fit::circular;
   spec.italic_deg = 10;
@@ -89,6 +91,7 @@ TEST(DepressionRs274, InchProgramCutsTheSameStrokes) {
 }
 
 TEST(DepressionRs274, SinglePassWithEllipseChords) {
+  REQUIRE_RS274();
   FigureSpec spec;
   spec.italic_deg = 20;
   const Figure fig = make_figure(spec);

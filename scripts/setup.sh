@@ -15,6 +15,7 @@ packages=(
   umockdev libumockdev-dev                      # the emulated LMC board behind real libusb (usbfs ioctls)
   hershey-fonts-data librecad-data
   fonts-dejavu-core fonts-liberation2           # TrueType outlines for the fill tests (DejaVu Sans, Liberation Sans)
+  python3-fonttools                             # writes the outline-font fixtures (tests/fonts/data/outline/make_fixtures.py)
   libpython3.11 libedit2 libtirpc3   # runtime of LinuxCNC's rs274 (G-code validator, fetch_rs274.sh)
 )
 

@@ -118,7 +118,7 @@ TEST(GravureCli, NothingIsWrittenWhenTheJobFails) {
   const auto png = fresh_temp_file("marker_gravure_cli", "never.png");
   const CliResult r = run_cli({"gravure", "/nonexistent.pgm", "--preview", png.string()});
   EXPECT_EQ(r.code, 1);
-  EXPECT_EQ(r.err, "marker: /nonexistent.pgm: cannot open the image\n");
+  EXPECT_EQ(r.err, "marker: '/nonexistent.pgm': cannot open the image: No such file or directory\n");
   EXPECT_FALSE(std::filesystem::exists(png));
   const CliResult wrong_mask = run_cli({"gravure", files().image, "--mask", files().image + ".nothing"});
   EXPECT_EQ(wrong_mask.code, 1);

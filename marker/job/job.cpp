@@ -154,7 +154,7 @@ JobHeader job_header(const JobSpec& spec, const CompiledJob& job, const DeviceDe
 std::vector<CodeVerification> verify_codes(const JobSpec& spec, const CompiledJob& job, const DoseRaster& dose) {
   std::vector<CodeVerification> out;
   for (std::size_t k = 0; k < job.codes.size(); ++k)
-    out.push_back(verify_code(job.codes[k], spec.codes[k].spec, dose, spec.verify));
+    out.push_back(check_code(job.codes[k], spec.codes[k].spec, dose, spec.verify));
   return out;
 }
 

@@ -1,7 +1,13 @@
 // Data Matrix ECC 200: where each codeword's eight modules are (ISO/IEC 16022 Annex F, the
 // "utah" placement with its four corner cases, in the mapping matrix of the data regions), the
-// interleaved Reed–Solomon blocks (codeword i belongs to block i mod B, data and
-// error-correction codewords alike), and the fixed patterns. The size table is libdmtx's.
+// interleaved Reed–Solomon blocks, and the fixed patterns. The size table is libdmtx's.
+//
+// Interleaving: codeword k of the whole stream (data, then error correction) belongs to block
+// k mod B. Where the data divides evenly among the blocks this is the same as counting the
+// error-correction codewords from block 0; only the 144 × 144 symbol (1558 data codewords in 10
+// blocks) tells the two apart, and its symbols as zint 2.11 encodes them are valid Reed–Solomon
+// blocks only this way (tests/marker/codes/symbol_map_test.cpp) — the arrangement ZXing reads and
+// libdmtx 0.7.7, which counts from block 0, does not.
 #include <dmtx.h>
 
 #include "base/error.hpp"
@@ -101,15 +107,14 @@ SymbolMap datamatrix_map(int rows, int cols) {
       m.codeword[static_cast<std::size_t>(r) * cols + c] = v / 10 - 1;
       m.bit[static_cast<std::size_t>(r) * cols + c] = 8 - v % 10;
     }
-  // Blocks: codeword i of the data and of the error correction belongs to block i mod B.
+  // Blocks: codeword k of the stream belongs to block k mod B.
   const int blocks = attr(DmtxSymAttribInterleavedBlocks), data = attr(DmtxSymAttribSymbolDataWords);
   const int ec = attr(DmtxSymAttribSymbolErrorWords);
   m.blocks.assign(static_cast<std::size_t>(blocks), RsBlock{0, attr(DmtxSymAttribBlockErrorWords), 0});
-  for (int i = 0; i < data; ++i) {
-    m.block_of.push_back(i % blocks);
-    ++m.blocks[static_cast<std::size_t>(i % blocks)].data;
+  for (int k = 0; k < data + ec; ++k) {
+    m.block_of.push_back(k % blocks);
+    if (k < data) ++m.blocks[static_cast<std::size_t>(k % blocks)].data;
   }
-  for (int i = 0; i < ec; ++i) m.block_of.push_back(i % blocks);
 
   // Fixed patterns: the L (left column, bottom row) and the quiet zone beside it, the clock
   // tracks (top row, right column), and the borders of the inner data regions.

@@ -38,11 +38,11 @@ std::vector<ModuleRef> module_refs(const ModuleMatrix& m, int quiet) {
   return out;
 }
 
-double pattern_correlation(const GreyImage& picture, const std::vector<ModuleRef>& modules, const ModuleGrid& g) {
+double pattern_correlation(const GreyImage& picture, const std::vector<ModuleRef>& modules, const ModuleGrid& g,
+                           int kSide) {
   // Pearson correlation of the picture with the intended pattern ("light" 1, dark 0), sampled
-  // at 4 × 4 points across each module: the module's middle alone sits on a plateau of the
-  // aperture's picture and cannot feel where its edges are.
-  constexpr int kSide = 4;
+  // at kSide × kSide points across each module: the module's middle alone sits on a plateau of
+  // the aperture's picture and cannot feel where its edges are.
   double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, n = 0;
   for (const ModuleRef& m : modules) {
     const double y = m.dark ? 0.0 : 1.0;
@@ -82,10 +82,13 @@ ModuleGrid fit_grid(const GreyImage& picture, const std::vector<ModuleRef>& modu
   for (const ModuleRef& m : modules) rows = std::max(rows, m.row), cols = std::max(cols, m.col);
   const Eigen::Vector2d middle(rows / 2.0, cols / 2.0);
   const double x = start.module_x_px();
+  // A large symbol pins its grid with fewer points a module (its edges are many).
+  const int side = modules.size() > 2000 ? 2 : 4;
+  const auto score = [&](const ModuleGrid& g) { return pattern_correlation(picture, modules, g, side); };
   // Steps: a quarter module of shift, 2 % of scale, a degree; limits: half a module, 10 %, 5°.
   std::array<double, 6> p{}, step{x / 4, x / 4, 0.02, 0.02, 0.0175, 0.0175};
   const std::array<double, 6> limit{x / 2, x / 2, 0.1, 0.1, 0.0873, 0.0873};
-  double best = pattern_correlation(picture, modules, start);
+  double best = score(start);
   for (int round = 0; round < 12; ++round) {
     bool improved = true;
     while (improved) {
@@ -95,7 +98,7 @@ ModuleGrid fit_grid(const GreyImage& picture, const std::vector<ModuleRef>& modu
           std::array<double, 6> q = p;
           q[k] += sign * step[k];
           if (std::abs(q[k]) > limit[k]) continue;
-          const double c = pattern_correlation(picture, modules, apply(start, q, middle));
+          const double c = score(apply(start, q, middle));
           if (c > best + 1e-12) best = c, p = q, improved = true;
         }
     }
@@ -120,17 +123,23 @@ double largest_local_shift_modules(const GreyImage& picture, const ModuleMatrix&
           edges_v += dark(r, c) != dark(r + 1, c);
         }
       if (edges_h < 2 || edges_v < 2) continue;  // nothing to pin the tile along one axis
-      // Shifts on a 0.05-module lattice within half a module; the smallest of equal fits.
-      double best = -2, best_shift = 0;
-      for (int i = -10; i <= 10; ++i)
-        for (int j = -10; j <= 10; ++j) {
-          ModuleGrid t = g;
-          t.origin += Eigen::Vector2d(i, j) * (0.05 * x);
-          const double c = pattern_correlation(picture, refs, t);
-          const double shift = std::hypot(i, j) * 0.05;
-          if (c > best + 1e-9 || (c > best - 1e-9 && shift < best_shift)) best = c, best_shift = shift;
-        }
-      largest = std::max(largest, best_shift);
+      // Shifts within half a module: on a lattice of 1/8 module, then of 1/32 about the best;
+      // the smallest of equal fits.
+      Eigen::Vector2d best_at(0, 0);
+      for (const double step : {0.125, 0.03125}) {
+        const Eigen::Vector2d around = best_at;
+        double best = -2, best_shift = 1e9;
+        for (int i = -4; i <= 4; ++i)
+          for (int j = -4; j <= 4; ++j) {
+            const Eigen::Vector2d at = around + Eigen::Vector2d(i, j) * step;
+            if (at.norm() > 0.5 + 1e-9) continue;
+            ModuleGrid t = g;
+            t.origin += at * x;
+            const double c = pattern_correlation(picture, refs, t);
+            if (c > best + 1e-9 || (c > best - 1e-9 && at.norm() < best_shift)) best = c, best_shift = at.norm(), best_at = at;
+          }
+      }
+      largest = std::max(largest, best_at.norm());
     }
   return largest;
 }

@@ -44,12 +44,14 @@ std::vector<ModuleRef> module_refs(const ModuleMatrix& matrix, int quiet);
 ModuleGrid fit_grid(const GreyImage& picture, const std::vector<ModuleRef>& modules, const ModuleGrid& start);
 
 // Local deviation of the symbol from a fitted grid: for each tile of `tile` × `tile` modules
-// that holds edges both ways, the shift (pixels) that best fits its modules; the largest shift
-// over all tiles in modules. 0 when no tile qualifies.
+// that holds edges both ways, the shift that best fits its modules (to 1/32 module, within half
+// a module); the largest over all tiles, in modules. 0 when no tile qualifies.
 double largest_local_shift_modules(const GreyImage& picture, const ModuleMatrix& matrix, const ModuleGrid& grid,
                                    int tile = 4);
 
-// Correlation of the samples at the grid's module centres with the intended pattern (−1 .. 1).
-double pattern_correlation(const GreyImage& picture, const std::vector<ModuleRef>& modules, const ModuleGrid& grid);
+// Correlation of the picture at `side` × `side` points across each module with the intended
+// pattern (−1 .. 1).
+double pattern_correlation(const GreyImage& picture, const std::vector<ModuleRef>& modules, const ModuleGrid& grid,
+                           int side = 4);
 
 }  // namespace mark

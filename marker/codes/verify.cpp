@@ -120,10 +120,15 @@ CodeVerification verify_code(const PlacedCode& code, const CodeSpec& spec, const
   const GreyImage aperture =
       synthetic_aperture(code.layout.style == ModuleStyle::dot ? connected : picture, o.aperture_modules * module_px);
 
-  // Every reader reads the aperture picture (a linear code turned upright first).
+  // A 2-D code's readers read the camera's picture (dots closed), as a reader on the line does:
+  // the synthetic aperture is the verifier's measuring tool, and its averaging costs libdmtx the
+  // edges of a moderate-contrast mark it reads in the picture. A linear code is read along scan
+  // lines through the aperture (as ISO/IEC 15416's scan profile is), turned upright first: ZBar
+  // misses Code 128 in a sharp, noisy picture it reads through the aperture.
   const SymbolInfo symbol{code.matrix.symbology, code.matrix.rows, code.matrix.cols};
+  const GreyImage& camera = code.layout.style == ModuleStyle::dot ? connected : picture;
   const GreyImage upright = linear ? code_frame_view(aperture, code, 2 * code.module_mm) : GreyImage{};
-  const GreyImage& seen = linear ? upright : aperture;
+  const GreyImage& seen = linear ? upright : camera;
   const CodeReader* measuring = nullptr;
   for (const CodeReader* r : code_readers()) {
     ReaderOutcome out;

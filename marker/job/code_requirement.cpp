@@ -12,14 +12,33 @@ std::optional<std::string> code_grade_shortfall(const JobSpec& spec, const std::
   return std::nullopt;
 }
 
-std::optional<std::string> predicted_code_grade_shortfall(const JobSpec& spec, int min_grade, double laser_rise_s) {
+namespace {
+
+JobOptions prediction_options() {
   JobOptions predict;
   predict.virtual_time = true;
   predict.realtime = false;
+  return predict;
+}
+
+SimScannerOptions prediction_scanner(const JobSpec& spec, double laser_rise_s) {
   SimScannerOptions o = simulator_options(spec);
   o.laser_rise_s = laser_rise_s;
-  SimScanner sim(o);
-  const JobResult r = run_job_simulated(spec, predict, sim);
+  return o;
+}
+
+}  // namespace
+
+std::optional<std::string> predicted_code_grade_shortfall(const JobSpec& spec, int min_grade, double laser_rise_s) {
+  SimScanner sim(prediction_scanner(spec, laser_rise_s));
+  const JobResult r = run_job_simulated(spec, prediction_options(), sim);
+  return code_grade_shortfall(spec, r.job.codes, r.codes, min_grade);
+}
+
+std::optional<std::string> predicted_code_grade_shortfall(const JobSpec& spec, const CompiledJob& job, int min_grade,
+                                                          double laser_rise_s) {
+  SimScanner sim(prediction_scanner(spec, laser_rise_s));
+  const JobResult r = run_job_simulated(spec, job, prediction_options(), sim);
   return code_grade_shortfall(spec, r.job.codes, r.codes, min_grade);
 }
 

@@ -22,5 +22,9 @@ std::optional<std::string> code_grade_shortfall(const JobSpec& spec, const std::
 // Throws what run_job throws for a refused job.
 std::optional<std::string> predicted_code_grade_shortfall(const JobSpec& spec, int min_grade,
                                                           double laser_rise_s = 0);
+// The same for a job already planned for a sample-level device (planned once, for the quality
+// prediction and the run as well).
+std::optional<std::string> predicted_code_grade_shortfall(const JobSpec& spec, const CompiledJob& job, int min_grade,
+                                                          double laser_rise_s = 0);
 
 }  // namespace mark

@@ -4,14 +4,14 @@
 # input, if any target finds a crash, a sanitizer report, a leak or a broken invariant.
 #   scripts/fuzz.sh [SECONDS]
 # Targets: the font loaders (jhf, lff, cxf), job files, the built-in font's glyph script, the PGM
-# reader, code data (GS1, UDI, the zint wrapper), head profiles, the option-value parsers (numbers, "CX,CY,R", "WxH"), and the LMC
+# reader, code data (GS1, UDI, the zint wrapper), head profiles, the option-value parsers (numbers, "CX,CY,R", "WxH"), the camera option (--camera KEY=VALUE,…), and the LMC
 # driver's readers (lmc_reply: replies and command words; cor_file: EzCad .cor files and captures).
 set -euo pipefail
 
 seconds=${1:-20}
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${MARKER_FUZZ_BUILD:-$root/build-fuzz}
-targets=(jhf lff cxf job glyph_script pgm option_values lmc_reply cor_file code_data head_profile)
+targets=(jhf lff cxf job glyph_script pgm option_values camera_option lmc_reply cor_file code_data head_profile)
 
 # -O1 with line tables only (asserts on): crash reports keep file:line, and a file compiles in
 # well under the time of -O2 -g.
@@ -29,12 +29,13 @@ declare -A seeds=(
   [glyph_script]="$root/tests/fuzz/seeds/glyph_script/*"
   [pgm]="$root/tests/fuzz/seeds/pgm/*"
   [option_values]="$root/tests/fuzz/seeds/option_values/*"
+  [camera_option]="$root/tests/fuzz/seeds/camera_option/*"
   [job]="$root/tests/fuzz/job-seeds/*.json"
   [code_data]="$root/tests/fuzz/code_data-seeds/*"
   [head_profile]="$root/tests/fuzz/head_profile-seeds/*.json"
 )
 # Option values and replies are short; the others are files (a .cor table is ~68 kB).
-declare -A max_len=([option_values]=64 [glyph_script]=1024 [lmc_reply]=256 [cor_file]=70000)
+declare -A max_len=([option_values]=64 [camera_option]=256 [glyph_script]=1024 [lmc_reply]=256 [cor_file]=70000)
 
 # Minimal valid inputs for the LMC readers, written into the corpus.
 lmc_seeds() {

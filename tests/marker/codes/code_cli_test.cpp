@@ -191,5 +191,29 @@ TEST(MarkCodeCli, ACodeAloneAndTheRefusals) {
       << unreadable.err;
 }
 
+TEST(MarkCodeCli, RequireGradeRefusesACodeBelowItBeforeFiring) {
+  // The same clean QR graded off the predicted mark: with a mark of reflectance 0.40 on a 0.55
+  // part its cell contrast is 1 − 0.40/0.55 = 27 %, grade B, so A is refused and B is met.
+  const std::vector<std::string> base = {"mark", "", "--code", "qr:SN 0042", "--camera", "mark_reflectance=0.40",
+                                         "--virtual-time", "--json"};
+  std::vector<std::string> strict = base, met = base;
+  strict.insert(strict.end(), {"--require-grade", "A"});
+  met.insert(met.end(), {"--require-grade", "B"});
+  const test::CliResult refused = test::run_cli(strict);
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_EQ(refused.err,
+            "marker: --require-grade A: code 1 (qr 21x21): grade B (cell contrast B); nothing was fired\n");
+  EXPECT_TRUE(refused.out.empty()) << "nothing ran";
+  const test::CliResult done = test::run_cli(met);
+  ASSERT_EQ(done.code, 0) << done.err;
+  const auto j = nlohmann::json::parse(done.out);
+  EXPECT_EQ(j["outcome"], "done");
+  EXPECT_EQ(j["codes"][0]["iso"]["overall"], "B");
+  EXPECT_EQ(j["codes"][0]["iso"]["cell_contrast"], "B");
+  EXPECT_NEAR(j["codes"][0]["iso"]["cell_contrast_fraction"].get<double>(), 1 - 0.40 / 0.55, 0.03);
+  const test::CliResult no_code = test::run_cli({"mark", "X", "--require-grade", "B", "--virtual-time"});
+  EXPECT_EQ(no_code.err, "marker: --require-grade B: the job marks no code (give --code)\n");
+}
+
 }  // namespace
 }  // namespace mark

@@ -3,7 +3,7 @@
 // versions 1–40 sampled, Code 128 and GS1-128 at 0°, 33° and 90°. Each code must pass by the
 // default rule (two readers agree, or the only one that reads it), each supporting reader must
 // read it exactly, and none may read anything else. The full sweep of marked codes is
-// build/bench/prog_code_matrix.
+// build/bench/code_matrix.
 #include <gtest/gtest.h>
 
 #include "base/error.hpp"
@@ -71,15 +71,24 @@ INSTANTIATE_TEST_SUITE_P(EverySize, ReaderDataMatrix, testing::ValuesIn(datamatr
                            return std::to_string(info.param.rows) + "x" + std::to_string(info.param.cols);
                          });
 
-TEST(ReaderDataMatrix, LibdmtxCannotReadThe144Square) {
-  // The reason it is not asked: a perfect 144 × 144 picture, read by libdmtx directly.
+// "SN42" as a 144 × 144 Data Matrix of 0.2 mm modules.
+CodeSpec largest_datamatrix() {
   CodeSpec spec;
   spec.data = "SN42";
   spec.matrix_rows = spec.matrix_cols = 144;
+  return spec;
+}
+
+PlacedCode placed(const CodeSpec& spec) {
   CodeObject o{spec, {}};
   o.layout.module_mm = 0.2;
   o.layout.style = ModuleStyle::line;
-  const PlacedCode code = place_encoded(o);
+  return place_encoded(o);
+}
+
+TEST(ReaderDataMatrix, LibdmtxCannotReadThe144Square) {
+  // The reason it is not asked: a perfect 144 × 144 picture, read by libdmtx directly.
+  const PlacedCode code = placed(largest_datamatrix());
   test::PictureLook look;
   look.pixel_mm = 0.04;
   const GreyImage picture = test::ideal_picture(code, code.matrix, look);
@@ -145,13 +154,8 @@ TEST(ReaderLinear, ZbarNeedsTheBarsUprightAt33Degrees) {
 }
 
 TEST(ReaderChoice, ANamedReaderDecidesAlone) {
-  CodeSpec spec;
-  spec.data = "SN42";
-  spec.matrix_rows = spec.matrix_cols = 144;
-  CodeObject o{spec, {}};
-  o.layout.module_mm = 0.2;
-  o.layout.style = ModuleStyle::line;
-  const PlacedCode code = place_encoded(o);
+  const CodeSpec spec = largest_datamatrix();
+  const PlacedCode code = placed(spec);
   EXPECT_THROW(check_reader_choice("libdmtx", code, "--reader"), InputError);
   EXPECT_THROW(check_reader_choice("zbar", code, "--reader"), InputError);
   EXPECT_NO_THROW(check_reader_choice("zxing", code, "--reader"));

@@ -6,14 +6,15 @@
 #   scripts/fuzz.sh [SECONDS] [TARGET...]      (TARGET: a name below, e.g. png outline_font)
 # Targets: the stroke-font loaders (jhf, lff, cxf), outline fonts (TrueType / CFF through
 # FreeType), job files, the built-in font's glyph script, the PGM and PNG readers, code data (GS1,
-# UDI, the zint wrapper), head profiles, the option-value parsers (numbers, "CX,CY,R", "WxH", --stock, --travel), and
+# UDI, the zint wrapper), head profiles, the option-value parsers (numbers, "CX,CY,R", "WxH", --stock, --travel), the camera
+# option (--camera KEY=VALUE,…), and
 # the LMC driver's readers (lmc_reply: replies and command words; cor_file: EzCad .cor files and
-# captures). All 13 at the default 20 s run for about four and a half minutes, plus the build.
+# captures). All 14 at the default 20 s run for about four and a half minutes, plus the build.
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${MARKER_FUZZ_BUILD:-$root/build-fuzz}
-all_targets=(jhf lff cxf outline_font job glyph_script pgm png option_values lmc_reply cor_file code_data head_profile)
+all_targets=(jhf lff cxf outline_font job glyph_script pgm png option_values camera_option lmc_reply cor_file code_data head_profile)
 
 seconds=20
 if [[ ${1:-} =~ ^[0-9]+$ ]]; then
@@ -53,12 +54,13 @@ declare -A seeds=(
   [glyph_script]="$root/tests/fuzz/seeds/glyph_script/*"
   [pgm]="$root/tests/fuzz/seeds/pgm/*"
   [option_values]="$root/tests/fuzz/seeds/option_values/*"
+  [camera_option]="$root/tests/fuzz/seeds/camera_option/*"
   [job]="$root/tests/fuzz/job-seeds/*.json"
   [code_data]="$root/tests/fuzz/code_data-seeds/*"
   [head_profile]="$root/tests/fuzz/head_profile-seeds/*.json"
 )
 # Option values and replies are short; the others are files (a .cor table is ~68 kB).
-declare -A max_len=([option_values]=64 [glyph_script]=1024 [lmc_reply]=256 [cor_file]=70000)
+declare -A max_len=([option_values]=64 [camera_option]=256 [glyph_script]=1024 [lmc_reply]=256 [cor_file]=70000)
 # The readers of hostile binary files get tighter limits than the default (10 s, 2048 MB), so an
 # input that costs more than its size allows fails the run instead of slowing it: a PNG decodes at
 # most its declared pixels (16 KB of input reach about 16 M pixels, 64 MB of floats), an outline

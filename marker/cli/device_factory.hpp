@@ -3,7 +3,9 @@
 // simulated scanner for the job's head and tick; "lmc", "lmc:SERIAL" and "lmc-capture:FILE" a
 // BJJCZ LMC board over USB (or its bytes captured to a file), its lens field the job's field;
 // "lmc-emulated[:VARIANT]" the emulated board with the simulated scanner behind it
-// (emulated_lmc_device.hpp).
+// (emulated_lmc_device.hpp). With the device comes what can tell how the mark came out: the
+// simulated scanner's evaluator (marker/job/sim_evaluator.hpp) — of the device itself, or of the
+// scanner behind the emulated board — or none for a real board.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -11,6 +13,7 @@
 #include "driver/device.hpp"
 #include "marker/cli/lmc_options.hpp"
 #include "marker/job/job.hpp"
+#include "marker/job/sim_evaluator.hpp"
 
 namespace mark::cli {
 
@@ -22,17 +25,16 @@ struct SimSettings {
   bool virtual_time = false;            // --virtual-time: the emulated board's clock too
 };
 
+struct OpenedDevice {
+  std::unique_ptr<Device> device;
+  // The simulated scanner's evaluator (pass it as JobOptions::evaluator); null for a real board.
+  // Its scanner() holds the dose and trace for --preview, --dose-png and --trace.
+  std::unique_ptr<SimEvaluator> simulator;
+};
+
 // The device named by `spec` for this job. Throws InputError naming the option and the kinds
 // known.
-std::unique_ptr<Device> open_device(const std::string& spec, const JobSpec& job,
-                                    const SimSettings& sim, const LmcArgs& lmc = {});
-
-// The simulated scanner a device marks on: the device itself (sim), the one behind the emulated
-// board (lmc-emulated), or none.
-SimScanner* simulated_scanner(Device& device);
-
-// Runs the job, compiled for the device's level, on the device; where a simulated scanner marks it, with the quality figures, the
-// pulses and every code read back off the simulated part (run_job_simulated's figures).
-JobResult run_on_device(const JobSpec& spec, CompiledJob job, const JobOptions& options, Device& device);
+OpenedDevice open_device(const std::string& spec, const JobSpec& job, const SimSettings& sim,
+                         const LmcArgs& lmc = {});
 
 }  // namespace mark::cli

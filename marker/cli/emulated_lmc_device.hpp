@@ -6,7 +6,7 @@
 // default; `virtual_time` runs the board as fast as it can (never past the data it has).
 //
 // driver/lmc/ and driver/sim/ know nothing of each other: this is where they meet, and the only
-// place (marker/cli/device_factory.cpp opens it, simulated_scanner() finds its scanner).
+// place (marker/cli/device_factory.cpp opens it with an evaluator of its scanner).
 #include <memory>
 #include <string>
 

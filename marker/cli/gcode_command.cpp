@@ -1,9 +1,12 @@
-// `marker gcode TEXT [layout options] --mode depression|protrusion --tool-diameter MM --depth MM
-//  [--depth-per-pass MM] [--dialect linuxcnc|fanuc|plain] [--units mm|inch] [--safe-z MM]
-//  [--feed MM/MIN] [--plunge-feed MM/MIN] [--spindle RPM] [--header LINE]... [--footer LINE]...
-//  [--arc-tolerance MM] [--ellipse-chords] [--m2] [--stroke-width MM] [--margin MM]
-//  [--stepover MM] [--cutter-comp] [--tool-image FILE --pixel-size UM] -o FILE.ngc
-//  [--preview FILE.svg] [--json]`: CNC engraving G-code for the same text and fitting as the laser.
+// `marker gcode TEXT [layout options] [--char-spacing PCT] [--word-spacing PCT]
+//  --mode depression|protrusion|v-carve --tool-diameter MM --depth MM [--depth-per-pass MM]
+//  [--bit-angle DEG] [--max-depth MM] [--flat-bottom MM --cleanup-output FILE] [--carve-tolerance MM]
+//  [--dialect linuxcnc|fanuc|plain] [--units mm|in] [--safe-z MM] [--feed MM/MIN] [--plunge-feed MM/MIN]
+//  [--spindle RPM] [--header LINE]... [--footer LINE]... [--arc-tolerance MM] [--ellipse-chords] [--m2]
+//  [--stroke-width MM] [--margin MM] [--stepover MM] [--cutter-comp] [--tool-image FILE --pixel-size UM]
+//  [--stock W,H|X,Y,W,H] [--travel X,Y] -o FILE.ngc [--preview FILE.svg] [--json] [--quiet]`:
+//  CNC engraving G-code for the same text and fitting as the laser, checked against the machine's
+//  envelope instead of a galvo field.
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -11,69 +14,20 @@
 #include "base/error.hpp"
 #include "fonts/utf8.hpp"
 #include "marker/cli/commands.hpp"
-#include "marker/cli/layout_options.hpp"
-#include "marker/cli/option_ranges.hpp"
+#include "marker/cli/console_progress.hpp"
+#include "marker/cli/gcode_options.hpp"
 #include "marker/cli/print.hpp"
 #include "marker/cli/tool_measure_report.hpp"
 #include "marker/cnc/depression.hpp"
 #include "marker/cnc/gcode_writer.hpp"
 #include "marker/cnc/letter_contacts.hpp"
-#include "marker/cnc/protrusion.hpp"
+#include "marker/cnc/stroke_gaps.hpp"
 #include "marker/cnc/tool/tool_measure.hpp"
 #include "marker/cnc/toolpath_preview.hpp"
 #include "marker/output/output_file.hpp"
 
 namespace mark::cli {
 namespace {
-
-// Engraving cutters run from 0.1 to 12 mm, feeds from a few to a few thousand mm/min; the ranges
-// leave room on both sides and keep every number a controller can be given.
-const Range kToolRange = length_range(0.01, 50);
-const Range kDepthRange = length_range(0.001, 50);
-const Range kDepthPerPassRange{0.001, 50, "mm", false, true};
-const Range kSafeZRange = length_range(0.1, 1000);
-const Range kFeedRange{1, 100000, "mm/min"};
-const Range kSpindleRange{1, 200000, "rpm", false, true};
-// Below 1 µm the tolerance is finer than the program's 4 decimals can write.
-const Range kArcToleranceRange = length_range(0.001, 1);
-const Range kStrokeWidthRange{0.01, 100, "mm", false, true};
-const Range kMarginRange{0.01, 1000, "mm", false, true};
-const Range kStepoverRange{0.001, 25, "mm", false, true};
-// Pocket loops closer than 5 % of the tool diameter only multiply the cutting time.
-constexpr double kMinStepoverShare = 0.05;
-
-struct GcodeArgs {
-  std::string text;
-  LayoutArgs layout;
-  std::string mode = "depression";
-  CutSettings cut;
-  ProtrusionSettings protrusion;
-  GcodeOptions gcode;
-  std::string dialect = "linuxcnc";
-  std::string units = "mm";
-  bool m2 = false;
-  std::string tool_image;
-  double pixel_size_um = 0;
-  std::string output;
-  std::string preview;
-  bool json = false;
-};
-
-// The checks that need more than one option; single values were checked while parsing.
-void check_settings(const GcodeArgs& a, bool protrusion) {
-  if (a.protrusion.cutter_comp && !protrusion)
-    throw InputError("--cutter-comp: only protrusion walls can be compensated by the control");
-  if (a.protrusion.cutter_comp && a.gcode.dialect == Dialect::plain)
-    throw InputError("--cutter-comp needs --dialect linuxcnc or fanuc: grbl has no G41/G42");
-  if (a.protrusion.stepover_mm > 0) {
-    const double d = a.cut.tool_diameter_mm;
-    check_range("--stepover", a.protrusion.stepover_mm,
-                Range{kMinStepoverShare * d, d / 2,
-                      "mm (from 5 % of the --tool-diameter to its radius)"});
-  }
-  if (!a.tool_image.empty() && !(a.pixel_size_um > 0))
-    throw InputError("--tool-image needs --pixel-size UM (micrometres per pixel)");
-}
 
 // One warning per line on stderr, and the same text in the JSON.
 void warn(nlohmann::json& warnings, const std::string& text) {
@@ -125,21 +79,73 @@ nlohmann::json protrusion_json(const ProtrusionResult& res, bool cutter_comp) {
   return j;
 }
 
-int run_gcode(GcodeArgs& a) {
-  a.gcode.dialect = parse_dialect(a.dialect);
-  a.gcode.units = parse_units(a.units);
-  a.gcode.end_with_m30 = !a.m2;
-  const bool protrusion = a.mode == "protrusion";
-  check_settings(a, protrusion);
-  validate(a.gcode);  // header and footer lines against the dialect, before any work
-  check_output_path("--output", a.output);
-  if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
+// A depression cut with a tool at least as wide as the gap between two strokes cuts them into one
+// groove.
+void warn_narrow_gap(const Figure& figure, double tool_mm, nlohmann::json& out, nlohmann::json& warnings,
+                     const Progress& progress) {
+  const std::optional<StrokeGap> gap = narrowest_stroke_gap(figure, tool_mm, progress);
+  out["narrowest_gap_mm"] = gap ? nlohmann::json(gap->width_mm) : nlohmann::json(nullptr);
+  if (!gap) return;
+  const Point at = (gap->a + gap->b) / 2;
+  warn(warnings, format("the tool (%g mm) is at least as wide as the narrowest gap between strokes, %.4f mm "
+                        "around (%.3f, %.3f) mm: the grooves on either side run into one; use a narrower tool, "
+                        "or raise --height or --char-spacing",
+                        tool_mm, gap->width_mm, at.x(), at.y()));
+}
 
-  const LaidOutText laid = build_figure(a.text, a.layout);
+nlohmann::json vcarve_json(const VCarveResult& r, const VCarveSettings& v, const GcodeArgs& a) {
+  return {{"bit_angle_deg", v.bit_angle_deg},
+          {"carve_tolerance_mm", v.tolerance_mm},
+          {"depth_limit_mm", r.depth_limit_mm},
+          {"deepest_mm", r.deepest_mm},
+          {"flat_area_mm2", r.flat_area_mm2},
+          {"uncleaned_area_mm2", r.uncleaned_area_mm2},
+          {"axis_edges", r.axis_edges},
+          {"pruned_edges", r.pruned_edges},
+          {"flat_bottom_mm", v.flat_bottom_mm > 0 ? nlohmann::json(v.flat_bottom_mm) : nlohmann::json(nullptr)},
+          {"cleanup_output", a.cleanup_output.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.cleanup_output)}};
+}
+
+void warn_flat(const VCarveResult& r, const VCarveSettings& v, nlohmann::json& warnings) {
+  if (r.uncleaned_area_mm2 <= 1e-6) return;
+  if (v.flat_bottom_mm > 0)
+    warn(warnings, format("the %g mm end mill cannot reach %.4f mm² of the flat bottoms (corners narrower than "
+                          "it): a smaller --flat-bottom tool reaches more",
+                          v.flat_bottom_mm, r.uncleaned_area_mm2));
+  else
+    warn(warnings, format("the depth limit of %.4f mm leaves %.4f mm² of flat bottoms that only the V-bit's tip "
+                          "crosses: clear them with --flat-bottom MM --cleanup-output FILE, or allow a deeper "
+                          "--max-depth",
+                          r.depth_limit_mm, r.flat_area_mm2));
+}
+
+nlohmann::json box_json(const Box& b) {
+  if (b.empty()) return nullptr;
+  return {{"x_min", b.min.x()}, {"y_min", b.min.y()}, {"x_max", b.max.x()}, {"y_max", b.max.y()}};
+}
+
+int run_gcode(GcodeArgs& a) {
+  check_gcode_args(a);
+  const bool protrusion = a.protrusion_mode(), vcarve = a.vcarve_mode();
+  validate(a.gcode);  // header and footer lines against the dialect, before any work
+  const MachineEnvelope envelope = machine_envelope(a);
+  check_output_path("--output", a.output);
+  if (!a.cleanup_output.empty()) {
+    check_output_path("--cleanup-output", a.cleanup_output);
+    if (a.cleanup_output == a.output) throw InputError("--cleanup-output must differ from --output");
+  }
+  if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
+  ConsoleProgress progress = command_progress(a.quiet || a.json);
+
+  // The base point lies within the machine's travel.
+  const double reach = std::max(envelope.travel_x_mm, envelope.travel_y_mm);
+  const Range in_travel{-reach, reach, "mm (within the --travel, " + format_number(envelope.travel_x_mm) + " x " +
+                                           format_number(envelope.travel_y_mm) + " mm)"};
+  const LaidOutText laid = lay_out_text(a.text, a.layout, to_layout_options(a.layout, in_travel));
   nlohmann::json out = {{"output", a.output},
                         {"mode", a.mode},
                         {"dialect", to_string(a.gcode.dialect)},
-                        {"units", a.units == "in" ? "inch" : a.units},
+                        {"units", a.gcode.units == Units::inch ? "inch" : "mm"},
                         {"text", unescape_text(a.text)},
                         {"font", a.layout.font},
                         {"height_mm", a.layout.height_mm}};
@@ -165,21 +171,47 @@ int run_gcode(GcodeArgs& a) {
 
   Toolpath tp;
   ProtrusionResult res;
+  VCarveResult carve;
+  const VCarveSettings vs = vcarve_settings(a);
+  CutFootprint footprint{a.cut.tool_diameter_mm / 2, 0};
   if (protrusion) {
-    res = protrusion_toolpath(laid.figure, a.cut, a.protrusion);
+    res = protrusion_toolpath(laid.figure, a.cut, a.protrusion, progress);
     tp = res.toolpath;
     warn_touching(laid, res.stroke_width_mm, warnings);
     warn_uncut(res, warnings);
     out["protrusion"] = protrusion_json(res, a.protrusion.cutter_comp);
+  } else if (vcarve) {
+    carve = vcarve_toolpath(laid.figure, a.cut, vs, progress);
+    tp = carve.toolpath;
+    footprint.v_half_angle_rad = carve.half_angle_rad;
+    warn_flat(carve, vs, warnings);
+    out["vcarve"] = vcarve_json(carve, vs, a);
   } else {
-    tp = depression_toolpath(laid.figure, a.cut);
+    tp = depression_toolpath(laid.figure, a.cut, progress);
+    warn_narrow_gap(laid.figure, a.cut.tool_diameter_mm, out, warnings, progress);
   }
+  // The machine's envelope: every cut on the stock, the whole program within the travel.
+  const ToolpathExtent extent = toolpath_extent(tp, footprint);
+  require_within(extent, envelope,
+                 "move the text with --x, --y or --align, lower --height, or give a larger --stock or --travel");
   GcodeStats st;
-  const std::string program = write_gcode(tp, a.gcode, &st);
+  const std::string program = write_gcode(tp, a.gcode, &st, progress);
+  std::string cleanup_program;
+  GcodeStats cleanup_stats;
+  if (!a.cleanup_output.empty()) {
+    GcodeOptions co = a.gcode;
+    co.title = "marker v-carve clean-up, " + format_number(vs.flat_bottom_mm) + " mm end mill: " + unescape_text(a.text);
+    cleanup_program = write_gcode(carve.cleanup, co, &cleanup_stats, progress);
+  }
+  // Everything is computed: the files go out whole, the program first.
+  progress.writing_files();
   write_file_whole(a.output, program);
+  if (!a.cleanup_output.empty()) write_file_whole(a.cleanup_output, cleanup_program);
   if (!a.preview.empty())
-    write_toolpath_preview(laid.figure, tp, a.cut.tool_diameter_mm, protrusion ? &res : nullptr, a.preview);
+    write_toolpath_preview(laid.figure, tp, a.cut.tool_diameter_mm, protrusion ? &res : nullptr, a.preview,
+                           vcarve ? &carve : nullptr);
 
+  const RapidTravel travel = rapid_travel(tp);
   out["lines"] = st.lines;
   out["rapid_moves"] = st.rapids;
   out["feed_moves"] = st.feeds;
@@ -188,6 +220,13 @@ int run_gcode(GcodeArgs& a) {
   out["calls"] = st.calls;
   out["inlined"] = st.inlined;
   out["max_arc_radius_error_mm"] = st.max_arc_radius_error_mm;
+  out["rapid_travel_mm"] = travel.xy_mm;
+  out["retracts"] = travel.retracts;
+  out["cut_bounds_mm"] = box_json(extent.cuts);
+  out["program_bounds_mm"] = box_json(extent.moves);
+  out["stock_mm"] = envelope.stock ? box_json(*envelope.stock) : nlohmann::json(nullptr);
+  out["travel_mm"] = {{"x", envelope.travel_x_mm}, {"y", envelope.travel_y_mm}};
+  if (vcarve) out["vcarve"]["cleanup_lines"] = cleanup_stats.lines;
   out["preview"] = a.preview.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.preview);
   out["warnings"] = warnings;
   if (a.json) {
@@ -197,6 +236,9 @@ int run_gcode(GcodeArgs& a) {
   std::cout << format("%s: %zu lines, %zu rapid, %zu feed, %zu arc moves; %zu subprograms, %zu calls, %zu inlined\n",
                       a.output.c_str(), st.lines, st.rapids, st.feeds, st.arcs, tp.subs.size(), st.calls,
                       st.inlined);
+  std::cout << format("rapid travel %.1f mm, %zu retracts; cuts span x %.3f to %.3f, y %.3f to %.3f mm\n",
+                      travel.xy_mm, travel.retracts, extent.cuts.min.x(), extent.cuts.max.x(), extent.cuts.min.y(),
+                      extent.cuts.max.y());
   if (protrusion) {
     std::cout << format("plate %.3f x %.3f mm at (%.3f, %.3f); %zu pocket loops per pass, step-over %.3f mm\n",
                         res.plate.width(), res.plate.height(), res.plate.min.x(), res.plate.min.y(), res.loops,
@@ -205,6 +247,13 @@ int run_gcode(GcodeArgs& a) {
       std::cout << format("cutter compensation: %zu walls under G41, %zu without room for a lead move cut as "
                           "tool-centre loops\n",
                           res.comp_walls, res.walls_without_comp);
+  }
+  if (vcarve) {
+    std::cout << format("v-carve: %g° bit, deepest %.4f mm (limit %.4f mm), %.4f mm² flat bottom\n", vs.bit_angle_deg,
+                        carve.deepest_mm, carve.depth_limit_mm, carve.flat_area_mm2);
+    if (!a.cleanup_output.empty())
+      std::cout << format("%s: %zu lines for the %g mm end mill\n", a.cleanup_output.c_str(), cleanup_stats.lines,
+                          vs.flat_bottom_mm);
   }
   if (!a.preview.empty()) std::cout << "preview: " << a.preview << "\n";
   return 0;
@@ -216,55 +265,9 @@ Command make_gcode_command() {
   auto a = std::make_shared<GcodeArgs>();
   return Command(
       [a](CLI::App& app) {
-        auto* sub = app.add_subcommand("gcode", "CNC engraving G-code: depression (engraved) or protrusion (raised) letters");
-        sub->add_option("text", a->text, "text to engrave (UTF-8; \\n starts a new line)")->required();
-        add_layout_options(*sub, a->layout);
-        sub->add_option("--mode", a->mode, "depression: tool centre on the strokes; protrusion: pocket around the letters")
-            ->check(CLI::IsMember({"depression", "protrusion"}))
-            ->capture_default_str();
-        add_ranged_option(*sub, "--tool-diameter", a->cut.tool_diameter_mm, "cutter diameter, mm", kToolRange)
-            ->capture_default_str();
-        add_ranged_option(*sub, "--depth", a->cut.depth_mm, "engraving depth below the surface, mm", kDepthRange)
-            ->capture_default_str();
-        add_ranged_option(*sub, "--depth-per-pass", a->cut.depth_per_pass_mm,
-                          "at most this deep per pass, mm (0: one pass)", kDepthPerPassRange)
-            ->capture_default_str();
-        add_ranged_option(*sub, "--safe-z", a->cut.safe_z_mm, "height for rapid moves, mm", kSafeZRange)
-            ->capture_default_str();
-        add_ranged_option(*sub, "--feed", a->cut.feed_mm_min, "cutting feed, mm/min", kFeedRange)->capture_default_str();
-        add_ranged_option(*sub, "--plunge-feed", a->cut.plunge_feed_mm_min, "plunge feed, mm/min", kFeedRange)
-            ->capture_default_str();
-        add_ranged_option(*sub, "--spindle", a->gcode.spindle_rpm, "spindle speed, rpm (0: no M3/M5)", kSpindleRange)
-            ->capture_default_str();
-        sub->add_option("--dialect", a->dialect, "linuxcnc (o-word subprograms), fanuc (O/M98/M99), plain (grbl, inlined)")
-            ->capture_default_str();
-        sub->add_option("--units", a->units, "output units: mm (G21) or inch (G20)")->capture_default_str();
-        sub->add_option("--header", a->gcode.header, "line after the program's modal preamble (repeatable)")->allow_extra_args(false);
-        sub->add_option("--footer", a->gcode.footer, "line before the program end (repeatable)")->allow_extra_args(false);
-        sub->add_option("--title", a->gcode.title, "comment at the top of the program (default: the mode and the text)");
-        sub->add_flag("--m2", a->m2, "end with M2 instead of M30");
-        add_ranged_option(*sub, "--arc-tolerance", a->cut.arcs.tolerance_mm,
-                          "how far arc splines of elliptical arcs may leave the curve, mm", kArcToleranceRange)
-            ->capture_default_str();
-        sub->add_flag("--ellipse-chords", a->cut.arcs.ellipse_chords, "cut elliptical arcs as G01 chords instead of biarcs");
-        add_ranged_option(*sub, "--stroke-width", a->protrusion.stroke_width_mm,
-                          "protrusion: width of the raised strokes, mm (0: tool diameter)", kStrokeWidthRange)
-            ->capture_default_str();
-        add_ranged_option(*sub, "--margin", a->protrusion.margin_mm,
-                          "protrusion: letters to boundary rectangle, mm (0: 2 × tool diameter)", kMarginRange)
-            ->capture_default_str();
-        add_ranged_option(*sub, "--stepover", a->protrusion.stepover_mm,
-                          "protrusion: between pocket loops, mm (0: 40 % of the tool diameter; else 5 % of the "
-                          "diameter to its radius)",
-                          kStepoverRange)
-            ->capture_default_str();
-        sub->add_flag("--cutter-comp", a->protrusion.cutter_comp,
-                      "protrusion: program the walls as part contours with G41 and the tool diameter in D");
-        sub->add_option("--tool-image", a->tool_image, "shadow image of the tool (PNG or PGM): its measured diameter replaces --tool-diameter in the offsets");
-        add_ranged_option(*sub, "--pixel-size", a->pixel_size_um, "tool image: micrometres per pixel", kPixelSizeRange);
-        sub->add_option("-o,--output", a->output, "G-code file to write")->required();
-        sub->add_option("--preview", a->preview, "draw the toolpath to FILE.svg or FILE.png");
-        sub->add_flag("--json", a->json, "print the result as one JSON object (docs/json.md)");
+        auto* sub = app.add_subcommand(
+            "gcode", "CNC engraving G-code: depression (engraved), protrusion (raised) or v-carved letters");
+        add_gcode_options(*sub, *a);
         return sub;
       },
       [a] { return run_gcode(*a); });

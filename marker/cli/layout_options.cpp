@@ -6,6 +6,7 @@
 #include "fonts/catalog.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
+#include "marker/layout/respace.hpp"
 #include "marker/limits/layout_limits.hpp"
 
 namespace mark::cli {
@@ -41,7 +42,7 @@ std::string unescape_text(const std::string& text) {
   return out;
 }
 
-void add_layout_options(CLI::App& app, LayoutArgs& a) {
+void add_layout_options(CLI::App& app, LayoutArgs& a, bool galvo_field) {
   app.add_option("--font", a.font, "font: 'builtin', an installed font name (see 'marker fonts') or a .jhf/.lff/.cxf file")
       ->capture_default_str();
   add_ranged_option(app, "--height", a.height_mm, "character (cap) height, mm", kHeightRange)
@@ -55,9 +56,9 @@ void add_layout_options(CLI::App& app, LayoutArgs& a) {
   app.add_option("--align", a.align, "alignment of each line about the base point")
       ->check(CLI::IsMember({"left", "center", "right"}))
       ->capture_default_str();
-  add_ranged_option(app, "--x", a.x_mm, "base point x (field frame, mm; inside the field)", kPositionRange)
-      ->capture_default_str();
-  add_ranged_option(app, "--y", a.y_mm, "base point y (first baseline, mm; inside the field)", kPositionRange)
+  const std::string frame = galvo_field ? "field frame, mm; inside the field" : "work coordinates, mm; inside the --travel";
+  add_ranged_option(app, "--x", a.x_mm, "base point x (" + frame + ")", kPositionRange)->capture_default_str();
+  add_ranged_option(app, "--y", a.y_mm, "base point y (first baseline; " + frame + ")", kPositionRange)
       ->capture_default_str();
   add_ranged_option(app, "--angle", a.angle_deg, "inclined fitting: rotate the text about the base point, degrees",
                     kAngleRange)
@@ -78,7 +79,17 @@ void add_layout_options(CLI::App& app, LayoutArgs& a) {
       ->capture_default_str();
   app.add_flag("--mirror", a.mirror, "mirror the text (reverse the letter order, mirror each letter)");
   app.add_flag("--replace-missing", a.replace_missing, "draw the font's replacement glyph for characters it lacks");
-  add_ranged_option(app, "--field", a.field_mm, "field size (square), mm", kFieldRange)->capture_default_str();
+  if (galvo_field)
+    add_ranged_option(app, "--field", a.field_mm, "field size (square), mm", kFieldRange)->capture_default_str();
+}
+
+void add_spacing_options(CLI::App& app, LayoutArgs& a) {
+  add_ranged_option(app, "--char-spacing", a.char_spacing_pct,
+                    "gap after each letter's drawing, % of the character height (F-Engrave's character "
+                    "spacing; default: the font's own)",
+                    kCharSpacingRange);
+  add_ranged_option(app, "--word-spacing", a.word_spacing_pct,
+                    "advance of a space, % of the character height (default: the font's own)", kWordSpacingRange);
 }
 
 void add_fill_options(CLI::App& app, LayoutArgs& a) {
@@ -98,9 +109,12 @@ std::optional<FillOptions> to_fill(const LayoutArgs& a, double beam_radius_mm) {
 
 LayoutOptions to_layout_options(const LayoutArgs& a) {
   // The base point lies in the field the text is checked against.
-  const Range in_field{-a.field_mm / 2, a.field_mm / 2, "mm (the --field is " + format_number(a.field_mm) + " mm)"};
-  check_range("--x", a.x_mm, in_field);
-  check_range("--y", a.y_mm, in_field);
+  return to_layout_options(a, Range{-a.field_mm / 2, a.field_mm / 2, "mm (the --field is " + format_number(a.field_mm) + " mm)"});
+}
+
+LayoutOptions to_layout_options(const LayoutArgs& a, const Range& position) {
+  check_range("--x", a.x_mm, position);
+  check_range("--y", a.y_mm, position);
   LayoutOptions o;
   o.height_mm = a.height_mm;
   o.width_factor = a.width_factor;
@@ -116,13 +130,15 @@ LayoutOptions to_layout_options(const LayoutArgs& a) {
   return o;
 }
 
-LaidOutText build_figure(const std::string& text, const LayoutArgs& args) {
+LaidOutText lay_out_text(const std::string& text, const LayoutArgs& args, const LayoutOptions& options) {
   Warnings warnings;
   LaidOutText out;
   out.font = open_font(args.font, &warnings);
   for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
+  if (args.char_spacing_pct || args.word_spacing_pct)
+    out.font = std::make_shared<const StrokeFont>(respaced_font(*out.font, args.char_spacing_pct, args.word_spacing_pct));
   const std::optional<FillOptions> fill = to_fill(args);
-  out.figure = layout_text(unescape_text(text), *out.font, to_layout_options(args));
+  out.figure = layout_text(unescape_text(text), *out.font, options);
   if (fill) {
     FillStats stats;
     out.figure = fill_figure(out.figure, *fill, &stats);
@@ -130,6 +146,11 @@ LaidOutText build_figure(const std::string& text, const LayoutArgs& args) {
   }
   out.field = Field{args.field_mm};
   if (out.figure.bounds().empty()) throw InputError("text '" + text + "' has nothing to mark");
+  return out;
+}
+
+LaidOutText build_figure(const std::string& text, const LayoutArgs& args) {
+  LaidOutText out = lay_out_text(text, args, to_layout_options(args));
   require_inside(out.figure.bounds(), out.field, "the text layout", kFieldRemedy);
   return out;
 }

@@ -12,6 +12,7 @@
 #include "marker/cli/hatch_options.hpp"
 #include "marker/fill/fill.hpp"
 #include "marker/layout/layout.hpp"
+#include "marker/limits/value_range.hpp"
 
 namespace mark::cli {
 
@@ -33,21 +34,32 @@ struct LayoutArgs {
   bool mirror = false;
   bool replace_missing = false;
   double field_mm = 110.0;
+  // Spacing as F-Engrave gives it (add_spacing_options): the gap after each letter's drawing and
+  // the advance of a space, in % of the character height; unset: the font's own spacing.
+  std::optional<double> char_spacing_pct;
+  std::optional<double> word_spacing_pct;
   // Filled outline fonts.
   std::string fill = "none";       // none | hatch
   std::string fill_rule = "nonzero";
   HatchArgs hatch;
 };
 
-void add_layout_options(CLI::App& app, LayoutArgs& args);
+// `galvo_field`: the text is marked in a square galvo field (--field, --x/--y inside it); a
+// milling machine has a stock and a travel instead, and its command checks those.
+void add_layout_options(CLI::App& app, LayoutArgs& args, bool galvo_field = true);
+// --char-spacing PCT, --word-spacing PCT (F-Engrave's spacing; the font's own without them).
+void add_spacing_options(CLI::App& app, LayoutArgs& args);
 void add_fill_options(CLI::App& app, LayoutArgs& args);
 
 // The fill to apply, or nothing for --fill none; insets default to `beam_radius_mm`. Throws
 // InputError naming the option.
 std::optional<FillOptions> to_fill(const LayoutArgs& args, double beam_radius_mm = 0.02);
 
-// LayoutOptions from the parsed arguments; throws InputError for a malformed --circle.
+// LayoutOptions from the parsed arguments with --x/--y inside the --field; throws InputError for
+// a malformed --circle.
 LayoutOptions to_layout_options(const LayoutArgs& args);
+// The same with --x/--y checked against the given range (a machine's travel).
+LayoutOptions to_layout_options(const LayoutArgs& args, const Range& position);
 
 struct LaidOutText {
   std::shared_ptr<const StrokeFont> font;
@@ -63,8 +75,11 @@ std::string unescape_text(const std::string& text);
 inline constexpr const char* kFieldRemedy =
     "lower --height, move the text with --x, --y or --align, or enlarge --field";
 
-// Opens the font, lays the text out (and fills it with --fill hatch), and refuses an empty text
-// or a layout that leaves the field.
+// Opens the font (respaced by --char-spacing / --word-spacing), lays the text out (and fills it
+// with --fill hatch), and refuses an empty text. No field: the caller checks where it lies.
+LaidOutText lay_out_text(const std::string& text, const LayoutArgs& args, const LayoutOptions& options);
+
+// lay_out_text with the options from the arguments, refusing a layout that leaves the field.
 LaidOutText build_figure(const std::string& text, const LayoutArgs& args);
 
 }  // namespace mark::cli

@@ -18,6 +18,10 @@ inline const Range kGapRange = length_range(-10000, 10000);
 // Below half the font's line height, lines print over each other.
 inline const Range kLineSpacingRange{0.5, 20, ""};
 inline const Range kAngleRange{-360, 360, "degrees"};
+// F-Engrave's spacing, in % of the character height: letters may overlap by up to half the
+// height, or stand ten heights apart; a space from nothing to ten heights.
+inline const Range kCharSpacingRange{-50, 1000, "% of the character height"};
+inline const Range kWordSpacingRange{0, 1000, "% of the character height"};
 // Beyond ±75° the shear slants a letter more than 3.7 times its height sideways.
 inline const Range kItalicRange{-75, 75, "degrees"};
 

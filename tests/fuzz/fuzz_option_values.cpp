@@ -1,7 +1,9 @@
 // libFuzzer target for the option-value parsers every numeric option goes through
-// (marker/cli/option_values.hpp, option_ranges.hpp): one number, and "A,B,C" / "AxB" lists. The
+// (marker/cli/option_values.hpp, option_ranges.hpp): one number, and "A,B,C" / "AxB" lists; and
+// the machine's envelope (machine_values.hpp: --stock "W,H" / "X,Y,W,H", --travel "X,Y"). The
 // input is either refused with an InputError or yields the promised count of numbers, and a
-// number the range check lets through is finite and inside the range.
+// number the range check lets through is finite and inside the range; a stock is a finite box
+// inside the limits, a travel two finite numbers inside theirs.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -9,8 +11,11 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "marker/cli/machine_values.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
+#include "marker/limits/cnc_limits.hpp"
+#include "marker/limits/layout_limits.hpp"
 
 namespace {
 
@@ -51,6 +56,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (const auto& r : ranges) check(v, r);
     } catch (const mark::InputError&) {
     }
+  }
+  try {
+    const mark::Box b = mark::cli::parse_stock(text);
+    const double w = b.width(), h = b.height();
+    if (!mark::kStockSizeRange.contains(w) || !mark::kStockSizeRange.contains(h)) broken("a stock size outside its range", w);
+    if (!mark::kPositionRange.contains(b.min.x()) || !mark::kPositionRange.contains(b.min.y()))
+      broken("a stock corner outside its range", b.min.x());
+  } catch (const mark::InputError&) {
+  }
+  try {
+    const auto [x, y] = mark::cli::parse_travel(text);
+    if (!mark::kTravelRange.contains(x) || !mark::kTravelRange.contains(y)) broken("a travel outside its range", x);
+  } catch (const mark::InputError&) {
   }
   return 0;
 }

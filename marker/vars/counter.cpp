@@ -72,6 +72,49 @@ std::string period_key(const CounterSpec& spec, SysTime now, const ShiftTable& s
   return "";
 }
 
+namespace {
+
+// The start of a shift key "2026-03-05/C" as (date, minute of the day); nothing when the code is
+// not in the table.
+std::optional<std::pair<std::string, int>> shift_start(const std::string& key, const ShiftTable& shifts) {
+  const std::size_t slash = key.find('/');
+  if (slash == std::string::npos) return std::nullopt;
+  const std::string code = key.substr(slash + 1);
+  for (const Shift& s : shifts.shifts())
+    if (s.code == code) return std::make_pair(key.substr(0, slash), s.start_minute);
+  return std::nullopt;
+}
+
+}  // namespace
+
+bool period_before(const CounterSpec& spec, const std::string& a, const std::string& b,
+                   const ShiftTable& shifts) {
+  if (a.empty() || b.empty()) return false;
+  switch (spec.reset) {
+    case ResetRule::never: return false;
+    case ResetRule::midnight:
+      // "YYYY-MM-DD": text order is date order; a key of the shift rule is not comparable.
+      return a.size() == 10 && b.size() == 10 && a < b;
+    case ResetRule::shift: {
+      const auto sa = shift_start(a, shifts), sb = shift_start(b, shifts);
+      return sa && sb && *sa < *sb;
+    }
+  }
+  return false;
+}
+
+PeriodChoice current_period(const CounterSpec& spec, const CounterState& state, SysTime now,
+                            const ShiftTable& shifts) {
+  PeriodChoice c;
+  c.clock_period = period_key(spec, now, shifts);
+  c.period = c.clock_period;
+  if (c.period != state.period && period_before(spec, c.period, state.period, shifts)) {
+    c.period = state.period;
+    c.stepped_back = true;
+  }
+  return c;
+}
+
 Issue take(const CounterSpec& spec, CounterState& state, const std::string& period) {
   CounterState s = state;
   if (s.period != period) s = CounterState::fresh(spec, period);

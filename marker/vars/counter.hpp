@@ -85,6 +85,22 @@ class SerialLimitError : public InputError {
 // the shift occurrence ("2026-03-05/C"; needs the job's shifts).
 std::string period_key(const CounterSpec& spec, SysTime now, const ShiftTable& shifts);
 
+// Periods only move forward. The period a part belongs to at `now`: the period of `now`, unless
+// the clock stands behind the stored period (stepped back across a midnight or a shift start) —
+// then the stored period is kept and `stepped_back` says so, because restarting a period the
+// counter has already counted in would issue its values a second time.
+struct PeriodChoice {
+  std::string period;
+  bool stepped_back = false;
+  std::string clock_period;  // the period of `now` (differs from `period` when stepped back)
+};
+PeriodChoice current_period(const CounterSpec& spec, const CounterState& state, SysTime now,
+                            const ShiftTable& shifts);
+// Whether reset period `a` began before `b` (keys of period_key(); "" — never reset — and keys
+// of another reset rule or of a shift no longer in the table are not ordered: false).
+bool period_before(const CounterSpec& spec, const std::string& a, const std::string& b,
+                   const ShiftTable& shifts);
+
 // Issues the next value and advances `state`. Throws SerialLimitError (state unchanged) when
 // the counter is past its limit and stops there.
 Issue take(const CounterSpec& spec, CounterState& state, const std::string& period);

@@ -88,7 +88,7 @@ PartResult PartRunner::mark_next(SysTime now, const PartOptions& options) {
   const Allocation a = store_.allocate(counters_, job_.shifts, context_, pick, [&](const PartValues& v) {
     std::map<std::string, std::string> columns;
     if (v.data_row) columns = data_->values(*v.data_row);
-    std::vector<ObjectText> texts = render_objects(job_, variables_, now, v.serials, &columns);
+    std::vector<ObjectText> texts = render_objects(job_, variables_, v.now, v.serials, &columns);
     compiled = compile(texts);
     return texts;
   });

@@ -159,6 +159,7 @@ Allocation SerialStore::allocate(const std::map<std::string, CounterSpec>& count
   return attempt(StoreStep::allocate, [&] {
     Allocation a;
     a.time_utc = format_utc(ctx.now);
+    SysTime dated = ctx.now;
     auto tx = backend_->begin();
     // std::map: counters are locked in name order, so two stations never wait on each other
     // in a cycle.
@@ -169,10 +170,14 @@ Allocation SerialStore::allocate(const std::map<std::string, CounterSpec>& count
                           ": create it with `marker serial create " + name +
                           " [--start N]` (or mark with --create-counters)");
       const PeriodChoice period = current_period(spec, *state, ctx.now, shifts);
-      if (period.stepped_back)
+      if (period.stepped_back) {
+        const std::optional<SysTime> start = period_start(spec, period.period, shifts);
+        if (start && *start > dated) dated = *start;
         a.note += std::string(a.note.empty() ? "" : "; ") + "clock behind counter \"" + name + "\": " +
                   a.time_utc + " lies in period " + period.clock_period + ", the counter counts in " +
-                  period.period + " already and stays there (periods only move forward)";
+                  period.period + " already and stays there (periods only move forward); the part is dated " +
+                  format_utc(dated);
+      }
       const Issue issue = take(spec, *state, period.period);
       if (const auto owner = tx->issue_owner(issue))
         throw PartRefused("counter \"" + name + "\" would issue " + std::to_string(issue.value) + " again (period '" +
@@ -184,7 +189,7 @@ Allocation SerialStore::allocate(const std::map<std::string, CounterSpec>& count
       a.serials[name] = issue.value;
       a.issues.emplace(name, issue);
     }
-    PartValues values{a.serials, std::nullopt};
+    PartValues values{a.serials, std::nullopt, dated};
     std::string row_key;
     if (data.list) {
       tx->lock_data_list(data.name);

@@ -74,10 +74,14 @@ struct DataPick {
   std::size_t from = 0;
 };
 
-// What one part consumes.
+// What one part consumes, and when it is dated.
 struct PartValues {
   std::map<std::string, std::int64_t> serials;
   std::optional<std::size_t> data_row;  // index into the data list
+  // The instant the part's date and shift fields render: the clock, or — when the clock stands
+  // behind a counter's period (stepped back across a reset) — the start of that period, so the
+  // part is dated in the period its number belongs to and its text cannot meet an earlier one.
+  SysTime now{};
 };
 
 struct Allocation {

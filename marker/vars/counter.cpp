@@ -1,5 +1,9 @@
 #include "marker/vars/counter.hpp"
 
+#include <date/date.h>
+
+#include <cstdio>
+
 namespace mark {
 
 std::string_view to_string(EndPolicy p) { return p == EndPolicy::stop ? "stop" : "wrap"; }
@@ -86,6 +90,26 @@ std::optional<std::pair<std::string, int>> shift_start(const std::string& key, c
 }
 
 }  // namespace
+
+std::optional<SysTime> period_start(const CounterSpec& spec, const std::string& key, const ShiftTable& shifts) {
+  std::string date = key;
+  int minute = 0;
+  if (spec.reset == ResetRule::shift) {
+    const auto s = shift_start(key, shifts);
+    if (!s) return std::nullopt;
+    date = s->first;
+    minute = s->second;
+  } else if (spec.reset != ResetRule::midnight) {
+    return std::nullopt;
+  }
+  int y = 0;
+  unsigned m = 0, d = 0;
+  if (date.size() != 10 || std::sscanf(date.c_str(), "%4d-%2u-%2u", &y, &m, &d) != 3) return std::nullopt;
+  const date::year_month_day ymd{date::year{y}, date::month{m}, date::day{d}};
+  if (!ymd.ok()) return std::nullopt;
+  const std::chrono::seconds local = date::sys_days{ymd}.time_since_epoch() + std::chrono::minutes{minute};
+  return spec.time_zone.from_local_seconds(local);
+}
 
 bool period_before(const CounterSpec& spec, const std::string& a, const std::string& b,
                    const ShiftTable& shifts) {

@@ -96,6 +96,11 @@ struct PeriodChoice {
 };
 PeriodChoice current_period(const CounterSpec& spec, const CounterState& state, SysTime now,
                             const ShiftTable& shifts);
+// The instant period `key` began: its local midnight, or its shift's start, in the counter's
+// time zone. Nothing for "" and for a key of another rule (or of a shift no longer in the table).
+// A part whose clock stands behind its counter's period is dated at this instant, so its date
+// and shift fields name the period its number belongs to.
+std::optional<SysTime> period_start(const CounterSpec& spec, const std::string& key, const ShiftTable& shifts);
 // Whether reset period `a` began before `b` (keys of period_key(); "" — never reset — and keys
 // of another reset rule or of a shift no longer in the table are not ordered: false).
 bool period_before(const CounterSpec& spec, const std::string& a, const std::string& b,

@@ -3,7 +3,7 @@
 # $MARKER_FUZZ_BUILD) and runs each for SECONDS (default 20). Exits non-zero, naming the crashing
 # input, if any target finds a crash, a sanitizer report, a leak or a broken invariant.
 #   scripts/fuzz.sh [SECONDS]
-# Targets: the font loaders (jhf, lff, cxf), job files, the built-in font's glyph script, the PGM
+# Targets: the font loaders (jhf, lff, cxf), job files, data lists (CSV), the built-in font's glyph script, the PGM
 # reader, code data (GS1, UDI, the zint wrapper), head profiles, the option-value parsers (numbers, "CX,CY,R", "WxH"), and the LMC
 # driver's readers (lmc_reply: replies and command words; cor_file: EzCad .cor files and captures).
 set -euo pipefail
@@ -11,7 +11,7 @@ set -euo pipefail
 seconds=${1:-20}
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${MARKER_FUZZ_BUILD:-$root/build-fuzz}
-targets=(jhf lff cxf job glyph_script pgm option_values lmc_reply cor_file code_data head_profile)
+targets=(jhf lff cxf job data_list glyph_script pgm option_values lmc_reply cor_file code_data head_profile)
 
 # -O1 with line tables only (asserts on): crash reports keep file:line, and a file compiles in
 # well under the time of -O2 -g.
@@ -30,6 +30,7 @@ declare -A seeds=(
   [pgm]="$root/tests/fuzz/seeds/pgm/*"
   [option_values]="$root/tests/fuzz/seeds/option_values/*"
   [job]="$root/tests/fuzz/job-seeds/*.json"
+  [data_list]="$root/tests/fuzz/seeds/data_list/*"
   [code_data]="$root/tests/fuzz/code_data-seeds/*"
   [head_profile]="$root/tests/fuzz/head_profile-seeds/*.json"
 )

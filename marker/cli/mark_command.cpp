@@ -76,7 +76,16 @@ struct MarkArgs {
   MarkJobArgs production;  // --job and its options
 };
 
-JobSpec make_spec(const MarkArgs& a) {
+// The spec and its one layout: the figure laid out (filled, with its codes) before the pen is
+// made, since the automatic speed comes from the figure's tightest curve. The plan is made once
+// the device (its level) is known.
+struct PreparedMark {
+  JobSpec spec;
+  CompiledJob laid_out;  // figure and codes; no plan yet
+  double layout_s = 0;   // wall time of the layout (part of the job's compile time)
+};
+
+PreparedMark prepare_mark(const MarkArgs& a) {
   JobSpec spec;
   spec.head = simulated_head(a.head);
   spec.head.field_mm = a.layout.field_mm;
@@ -98,17 +107,15 @@ JobSpec make_spec(const MarkArgs& a) {
     spec.codes.push_back(to_code_object(a.code.substr(0, colon), a.code.substr(colon + 1), a.code_args,
                                         to_fill_options(a.layout.hatch, beam_radius_mm), "code-"));
   }
-  // The letters laid out here first so a text leaving the field is refused with what to change
-  // (the job checks it again, with its blanking lines, before the first sample).
-  if (!spec.text.empty()) {
-    const Figure letters = layout_text(spec.text, *spec.font, spec.layout);
-    if (!letters.bounds().empty())
-      require_inside(letters.bounds(), Field{spec.head.field_mm}, "the text layout", kFieldRemedy);
-  }
+  // A text leaving the field is refused with what to change (the plan is checked again, with
+  // its blanking lines, before the first sample).
+  const auto t0 = std::chrono::steady_clock::now();
+  CompiledJob laid_out = lay_out_job(spec, kFieldRemedy);
+  const double layout_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   double speed_mm_s = 0;
   if (a.speed == "auto") {
     // The whole figure: filled letters' contour arcs and a code's dots count too.
-    speed_mm_s = auto_mark_speed_mm_s(job_figure(spec), spec.head);
+    speed_mm_s = auto_mark_speed_mm_s(laid_out.figure, spec.head);
   } else {
     const Range speeds = positive_up_to(spec.head.max_speed_mm_s, "mm/s (head " + spec.head.name + "'s positioning limit)");
     const std::optional<double> v = parse_number(a.speed);
@@ -120,7 +127,7 @@ JobSpec make_spec(const MarkArgs& a) {
   pen.speed_mm_s = speed_mm_s;
   spec.pen = make_pen(pen, spec.head);
   spec.laser = a.laser;
-  return spec;
+  return {std::move(spec), std::move(laid_out), layout_s};
 }
 
 nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobOptions& options,
@@ -224,9 +231,10 @@ void write_trace(const std::vector<SimTraceRow>& rows, const std::string& path) 
   write_file_whole(path, csv);
 }
 
-// --require-quality: the simulator predicts the mark (virtual time, no device touched); below
-// the class the job is refused before anything fires.
-void require_quality(const JobSpec& spec, const std::string& name, double laser_rise_s) {
+// --require-quality: the simulator predicts the mark of `job` (planned for a sample-level device;
+// virtual time, no device touched); below the class the job is refused before anything fires.
+void require_quality(const JobSpec& spec, const CompiledJob& job, const std::string& name,
+                     double laser_rise_s) {
   const auto wanted = parse_quality_class(name);
   if (!wanted || *wanted == QualityClass::poor)
     throw InputError("--require-quality '" + name + "' is not one of high, good");
@@ -235,7 +243,7 @@ void require_quality(const JobSpec& spec, const std::string& name, double laser_
   SimScannerOptions o = simulator_options(spec);
   o.laser_rise_s = laser_rise_s;
   SimScanner sim(o);
-  const JobResult r = run_job_simulated(spec, predict, sim);
+  const JobResult r = run_job_simulated(spec, job, predict, sim);
   for (std::size_t k = 0; k < r.codes.size(); ++k)
     if (!r.codes[k].data_match)
       throw InputError("--require-quality " + name + ": code " + std::to_string(k + 1) + " (" +
@@ -255,15 +263,27 @@ void require_quality(const JobSpec& spec, const std::string& name, double laser_
 
 int run_mark(const MarkArgs& a) {
   if (a.text.empty() && a.code.empty()) throw InputError("mark: give the text to mark (or --code), or --job FILE");
-  const JobSpec spec = make_spec(a);
+  PreparedMark prepared = prepare_mark(a);
+  const JobSpec& spec = prepared.spec;
   // Every file the job writes is checked before anything is fired.
   if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
   if (!a.dose_png.empty()) check_output_path("--dose-png", a.dose_png, {".png"});
   if (!a.trace.empty()) check_output_path("--trace", a.trace);
   const InjectArg inject = a.inject.empty() ? InjectArg{} : parse_inject(a.inject);
   if (inject.store) throw InputError("--inject " + a.inject + ": the store applies to a production run: give --job FILE");
-  if (!a.require_quality.empty())
-    require_quality(spec, a.require_quality, a.head.laser_rise_us * 1e-6);
+  // One plan for the sample-level prediction, kept for the run when the device takes samples
+  // too (the simulated scanner): the text is laid out and planned once per mark.
+  const auto seconds_since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
+  std::optional<CompiledJob> sample_plan;
+  double plan_s = 0;
+  if (!a.require_quality.empty()) {
+    const auto t = std::chrono::steady_clock::now();
+    sample_plan = plan_job(prepared.laid_out, spec, DeviceLevel::samples);
+    plan_s = seconds_since(t);
+    require_quality(spec, *sample_plan, a.require_quality, a.head.laser_rise_us * 1e-6);
+  }
 
   SimSettings sim_settings;
   sim_settings.fault_at = inject.device_fault_at;
@@ -279,8 +299,18 @@ int run_mark(const MarkArgs& a) {
   options.stop = &interrupt_flag();
   options.inject = inject.drain;
   if (!a.json && isatty(STDERR_FILENO)) options.progress = progress_printer();
-  const JobResult r =
-      scanner ? run_job_simulated(spec, options, *scanner) : run_job(spec, options, *device);
+  const DeviceLevel level = device->describe().level;
+  std::optional<CompiledJob> job;
+  if (sample_plan && level == DeviceLevel::samples) {
+    job = std::move(sample_plan);
+  } else {
+    const auto t = std::chrono::steady_clock::now();
+    job = plan_job(std::move(prepared.laid_out), spec, level);
+    plan_s = seconds_since(t);
+  }
+  options.compiled_s = prepared.layout_s + plan_s;
+  const JobResult r = scanner ? run_job_simulated(spec, std::move(*job), options, *scanner)
+                              : run_compiled_job(spec, std::move(*job), options, *device);
   // A job stopped by Ctrl-C leaves no files: what it would show is not the part on the machine's
   // table. A failed job's files show how far it got.
   std::optional<CameraImage> picture;

@@ -8,6 +8,7 @@
 #include "marker/fill/fill.hpp"
 #include "marker/job/device_program.hpp"
 #include "marker/job/intended_strokes.hpp"
+#include "marker/job/job_checks.hpp"
 #include "marker/job/job_compiler.hpp"
 #include "marker/job/job_run.hpp"
 #include "marker/job/simulate_plan.hpp"
@@ -35,13 +36,13 @@ void set_marked_text(JobSpec& spec, std::string_view text, bool code_escapes) {
     spec.codes.front().spec.data = code_escapes ? unescape_code_data(text) : std::string(text);
 }
 
-Figure job_figure(const JobSpec& spec, std::vector<PlacedCode>* codes) {
+Figure job_figure(const JobSpec& spec, std::vector<PlacedCode>* codes, std::string_view field_remedy) {
   const Field field{spec.head.field_mm};
   Figure figure;
   if (!spec.text.empty()) {
     if (!spec.font) throw InputError("no font given for the text to mark");
     figure = layout_text(spec.text, *spec.font, spec.layout);
-    check_layout(figure, spec);  // the letters before their fill, so the message names them
+    check_layout(figure, spec, field_remedy);  // the letters before their fill, so the message names them
     if (spec.fill) figure = fill_figure(figure, *spec.fill);
   }
   std::vector<PlacedCode> placed;
@@ -69,15 +70,27 @@ Figure job_figure(const JobSpec& spec, std::vector<PlacedCode>* codes) {
   return figure;
 }
 
-CompiledJob compile_job(const JobSpec& spec, DeviceLevel level, const Point& home) {
-  check_spec(spec, spec.text);
+CompiledJob lay_out_job(const JobSpec& spec, std::string_view field_remedy) {
+  check_text(spec, spec.text);
   CompiledJob job;
+  job.figure = job_figure(spec, &job.codes, field_remedy);
+  return job;
+}
+
+CompiledJob plan_job(CompiledJob job, const JobSpec& spec, DeviceLevel level, const Point& home) {
+  check_pen(spec.pen, spec.head);
   job.level = level;
-  job.figure = job_figure(spec, &job.codes);
   job.plan = level == DeviceLevel::commands ? plan_for_device(job.figure, spec.pen, spec.order)
                                             : plan_figure(job.figure, spec.pen, spec.order, home);
   complete_plan(job, spec);
   return job;
+}
+
+CompiledJob compile_job(const JobSpec& spec, DeviceLevel level, const Point& home) {
+  // The pen is known: refuse it before the work of a layout, as a spec's refusals come first.
+  check_text(spec, spec.text);
+  check_pen(spec.pen, spec.head);
+  return plan_job(lay_out_job(spec), spec, level, home);
 }
 
 namespace {
@@ -133,7 +146,7 @@ JobResult run_job(const JobSpec& spec, const JobOptions& options, Device& device
 
 JobResult run_compiled_job(const JobSpec& spec, CompiledJob job, const JobOptions& options,
                            Device& device) {
-  return run_on_device(spec, std::move(job), 0, JobClock::now(), options, device);
+  return run_on_device(spec, std::move(job), options.compiled_s, JobClock::now(), options, device);
 }
 
 JobHeader job_header(const JobSpec& spec, const CompiledJob& job, const DeviceDescription& device) {
@@ -160,12 +173,25 @@ std::vector<CodeVerification> verify_codes(const JobSpec& spec, const CompiledJo
 
 SimScannerOptions simulator_options(const JobSpec& spec) { return simulator_options(spec.head, spec.pen); }
 
-JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,
-                            const QualityReference* reference) {
-  JobResult result = run_job(spec, options, scanner);
+namespace {
+
+JobResult evaluated(JobResult result, const JobSpec& spec, const SimScanner& scanner,
+                    const QualityReference* reference) {
   result.quality = simulated_quality(result, scanner, reference);
   result.codes = verify_codes(spec, result.job, scanner.dose());
   return result;
+}
+
+}  // namespace
+
+JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,
+                            const QualityReference* reference) {
+  return evaluated(run_job(spec, options, scanner), spec, scanner, reference);
+}
+
+JobResult run_job_simulated(const JobSpec& spec, CompiledJob job, const JobOptions& options,
+                            SimScanner& scanner, const QualityReference* reference) {
+  return evaluated(run_compiled_job(spec, std::move(job), options, scanner), spec, scanner, reference);
 }
 
 Quality simulated_quality(const JobResult& result, const SimScanner& scanner,

@@ -64,15 +64,28 @@ void set_marked_text(JobSpec& spec, std::string_view text, bool code_escapes);
 // What the job marks, before planning: the text laid out (and filled), then each code's marks as
 // one more glyph. Every part is refused if it leaves the field (naming it). `codes` receives the
 // placed codes when given.
-Figure job_figure(const JobSpec& spec, std::vector<PlacedCode>* codes = nullptr);
+Figure job_figure(const JobSpec& spec, std::vector<PlacedCode>* codes = nullptr,
+                  std::string_view field_remedy = {});
 
 // Layout, plan and every refusal. Throws InputError (or MissingGlyphError) naming the problem.
 // `level` picks the plan a device of that level takes (command-level: no host delay dwells).
 // The parts of a series compile incrementally with a JobCompiler (marker/job/job_compiler.hpp).
 // `home` is where a sample-level device's mirrors are when the job starts (its plan's first jump
-// starts there).
+// starts there). compile_job = plan_job(lay_out_job(spec), …).
 CompiledJob compile_job(const JobSpec& spec, DeviceLevel level = DeviceLevel::samples,
                         const Point& home = Point(0, 0));
+
+// A mark is laid out once and planned once for its device: the two halves of compile_job, for a
+// caller that needs the figure before the pen is known (the automatic speed comes from the
+// figure's tightest curve), and that shares one compile between the quality prediction and the
+// run. lay_out_job: the spec's refusals before the layout (text, font, passes), the layout with
+// its fill and codes (job_figure), the letters inside the field — `field_remedy`, what the user
+// can change, ends that message. The plan is left empty.
+CompiledJob lay_out_job(const JobSpec& spec, std::string_view field_remedy = {});
+// Plans a laid-out job for `level` with the spec's pen, with every plan refusal (the pen against
+// the head, speeds, the field with blanking lines and jumps).
+CompiledJob plan_job(CompiledJob laid_out, const JobSpec& spec, DeviceLevel level,
+                     const Point& home = Point(0, 0));
 
 // Fault injection (tests, `marker mark --inject KIND@N`): the drain finds the memory empty from
 // sample N on (underrun) or stops at sample N as if cancelled (abort). A device fault at N is
@@ -96,6 +109,9 @@ struct JobOptions {
   bool realtime = true;               // real time: ask for SCHED_FIFO and locked memory
   const StopFlag* stop = nullptr;     // stop requests (Ctrl-C); not owned
   Injection inject;
+  // run_compiled_job: the wall time the caller spent compiling the job it hands over (layout and
+  // plan), the first part of JobResult::compile_time_s.
+  double compiled_s = 0;
   // Called on the producer thread about every 100 ms with samples out / samples in the job.
   std::function<void(std::uint64_t done, std::uint64_t total)> progress;
 };
@@ -150,6 +166,9 @@ std::vector<CodeVerification> verify_codes(const JobSpec& spec, const CompiledJo
 // dose for a preview.
 JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,
                             const QualityReference* reference = nullptr);
+// The same for a job compiled beforehand for a sample-level device.
+JobResult run_job_simulated(const JobSpec& spec, CompiledJob job, const JobOptions& options,
+                            SimScanner& scanner, const QualityReference* reference = nullptr);
 // The quality figures of the job `result` just ran on `scanner` (how run_job_simulated gets
 // them), against its figure's intended strokes or `reference`.
 Quality simulated_quality(const JobResult& result, const SimScanner& scanner,

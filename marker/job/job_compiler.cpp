@@ -7,18 +7,17 @@
 
 namespace mark {
 
-void check_spec(const JobSpec& spec, std::string_view text) {
+void check_text(const JobSpec& spec, std::string_view text) {
   if (text.empty() && spec.codes.empty()) throw InputError("the text to mark is empty");
   if (!text.empty() && !spec.font) throw InputError("no font given for the text to mark");
   if (spec.passes < 1 || spec.passes > 100)
     throw InputError("passes " + std::to_string(spec.passes) + " is outside 1 to 100");
-  check_pen(spec.pen, spec.head);
 }
 
-void check_layout(const Figure& figure, const JobSpec& spec) {
+void check_layout(const Figure& figure, const JobSpec& spec, std::string_view remedy) {
   // The letters themselves first, so the message says which part leaves the field.
   if (!figure.bounds().empty())
-    require_inside(figure.bounds(), Field{spec.head.field_mm}, "the text layout");
+    require_inside(figure.bounds(), Field{spec.head.field_mm}, "the text layout", remedy);
 }
 
 void complete_plan(CompiledJob& job, const JobSpec& spec) {
@@ -37,7 +36,8 @@ CompiledJob JobCompiler::compile(std::string_view text, const Point& home) {
     set_marked_text(spec, text, code_escapes_);
     return compile_job(spec, level_, home);
   }
-  check_spec(spec_, text);
+  check_text(spec_, text);
+  check_pen(spec_.pen, spec_.head);
   CompiledJob job;
   job.level = level_;
   relayout_text(text, *spec_.font, spec_.layout, figure_);

@@ -16,10 +16,11 @@
 namespace mark {
 
 // The steps compile_job and JobCompiler share: the spec's refusals before the layout (text,
-// font, pen, passes), the layout's (the letters leave the field), and the plan's completion
-// (passes, laser delay ticks) with its refusals (speeds, field).
-void check_spec(const JobSpec& spec, std::string_view text);
-void check_layout(const Figure& figure, const JobSpec& spec);
+// font, passes), the layout's (the letters leave the field; `remedy` ends the message), and the
+// plan's completion (passes, laser delay ticks) with its refusals (speeds, field). The pen is
+// checked against the head (check_pen, job_checks.hpp) before planning.
+void check_text(const JobSpec& spec, std::string_view text);
+void check_layout(const Figure& figure, const JobSpec& spec, std::string_view remedy = {});
 void complete_plan(CompiledJob& job, const JobSpec& spec);
 
 class JobCompiler {

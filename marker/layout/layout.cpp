@@ -5,6 +5,7 @@
 #include "marker/layout/layout.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -176,8 +177,15 @@ Figure layout_text(std::string_view utf8_text, const StrokeFont& font, const Lay
   return figure;
 }
 
+namespace {
+std::atomic<std::uint64_t> layouts{0};
+}  // namespace
+
+std::uint64_t layouts_made() { return layouts.load(std::memory_order_relaxed); }
+
 void relayout_text(std::string_view utf8_text, const StrokeFont& font, const LayoutOptions& o,
                    Figure& figure) {
+  layouts.fetch_add(1, std::memory_order_relaxed);
   validate(o);
   const std::u32string text = decode_utf8(utf8_text, "text");
   std::vector<PlacedGlyph> reuse = std::move(figure.glyphs);

@@ -2,6 +2,7 @@
 // Text layout: text (UTF-8, several lines) + font + fitting → Figure. Follows the CNC paper's data
 // processor (scaling to height, letter gap, linear / inclined / circular fitting, font inclination
 // by shear, mirroring), with Eigen affine transforms.
+#include <cstdint>
 #include <optional>
 #include <string_view>
 
@@ -48,6 +49,9 @@ Figure layout_text(std::string_view utf8_text, const StrokeFont& font, const Lay
 // equals layout_text()'s. Same errors; on an error `figure` is left empty of glyphs.
 void relayout_text(std::string_view utf8_text, const StrokeFont& font, const LayoutOptions& options,
                    Figure& figure);
+// Texts this process has laid out (layout_text and relayout_text calls): tests and benchmarks
+// hold a command to one layout per mark with it.
+std::uint64_t layouts_made();
 
 // A square field centred on the origin.
 struct Field {

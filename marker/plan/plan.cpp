@@ -1,6 +1,7 @@
 #include "marker/plan/plan.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "marker/plan/plan_builder.hpp"
@@ -65,7 +66,15 @@ std::size_t Plan::count(CommandRole role) const {
       commands.begin(), commands.end(), [&](const Command& c) { return c.role == role; }));
 }
 
+namespace {
+std::atomic<std::uint64_t> plans{0};
+}  // namespace
+
+std::uint64_t plans_made() { return plans.load(std::memory_order_relaxed); }
+void count_plan() { plans.fetch_add(1, std::memory_order_relaxed); }
+
 Plan plan_strokes(const std::vector<Stroke>& ordered_strokes, const Pen& pen, const Point& home) {
+  count_plan();
   Plan plan;
   plan.pen = pen;
   plan.home = home;

@@ -30,6 +30,10 @@ Plan plan_strokes(const std::vector<Stroke>& ordered_strokes, const Pen& pen,
                   const Point& home = Point(0, 0));
 Plan plan_figure(const Figure& figure, const Pen& pen, StrokeOrder order = StrokeOrder::glyph,
                  const Point& home = Point(0, 0));
+// Plans this process has made (plan_strokes calls and Replanner updates): tests and benchmarks
+// hold a command to one plan per mark with it.
+std::uint64_t plans_made();
+void count_plan();  // for the planners (plan_strokes, Replanner)
 
 // Turn angle φ ∈ [0, π] between the end direction of `a` and the start direction of `b`
 // (0 = straight on, π = reversal).

@@ -18,6 +18,7 @@ const Plan& Replanner::update(const Figure& figure) {
     replanned_ = n;
     return plan_;
   }
+  count_plan();  // planned again from its first changed glyph: one plan of this part
   std::vector<GlyphKey> keys(n);
   for (std::size_t g = 0; g < n; ++g) {
     const PlacedGlyph& p = figure.glyphs[g];

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <thread>
 
+#include "marker/layout/layout.hpp"
+#include "marker/plan/plan.hpp"
 #include "tests/marker/cli_runner.hpp"
 
 namespace mark {
@@ -150,6 +152,24 @@ TEST(CliMark, DefaultSpeedMarksOrdinaryTextAtHighQuality) {
                                   "1000", "--virtual-time", "--json"});
   EXPECT_EQ(nlohmann::json::parse(old.out)["quality"]["class"], "poor");
   EXPECT_NE(old.err.find("warning: poor mark predicted"), std::string::npos) << old.err;
+}
+
+// Issue 19: a mark is laid out once and planned once, whatever decides its speed or predicts
+// its quality (it was laid out three times and planned twice with --require-quality).
+TEST(CliMark, LaysOutAndPlansOncePerMark) {
+  const std::vector<std::vector<std::string>> marks = {
+      {"mark", "SN 0042", "--height", "2", "--virtual-time"},
+      {"mark", "SN 0042", "--height", "2", "--virtual-time", "--speed", "700"},
+      {"mark", "SN 0042", "--height", "3", "--virtual-time", "--speed", "300", "--require-quality", "good"},
+      {"mark", "LOT 7", "--height", "2", "--virtual-time", "--code", "datamatrix:SN0042", "--code-x", "20"},
+  };
+  for (const auto& args : marks) {
+    const std::uint64_t layouts = layouts_made(), plans = plans_made();
+    const auto r = run_cli(args);
+    ASSERT_EQ(r.code, 0) << args[1] << ": " << r.err;
+    EXPECT_EQ(layouts_made() - layouts, 1u) << args.back();
+    EXPECT_EQ(plans_made() - plans, 1u) << args.back();
+  }
 }
 
 }  // namespace

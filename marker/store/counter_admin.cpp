@@ -4,6 +4,26 @@
 #include "marker/store/utc_time.hpp"
 
 namespace mark {
+namespace {
+
+// An audit row of the counters' administration (created, set, a value reserved): who, when,
+// which job; appended with its outcome in the caller's transaction.
+std::int64_t append_admin_row(StoreTransaction& tx, const MarkContext& ctx, AuditKind kind, MarkRecord m,
+                              Outcome outcome = Outcome::done) {
+  m.time_utc = format_utc(ctx.now);
+  m.station = ctx.station;
+  m.job = ctx.job;
+  m.job_sha256 = ctx.job_sha256;
+  m.kind = kind;
+  const std::int64_t id = tx.insert_mark(m);
+  OutcomeRecord o;
+  o.time_utc = m.time_utc;
+  o.outcome = outcome;
+  tx.insert_outcome(id, o);
+  return id;
+}
+
+}  // namespace
 
 void SerialStore::create_counter(const std::string& name, std::int64_t start, const std::string& period,
                                  const MarkContext& ctx) {
@@ -17,16 +37,8 @@ void SerialStore::create_counter(const std::string& name, std::int64_t start, co
     s.period = period;
     tx->create_counter(name, s);
     MarkRecord m;
-    m.time_utc = format_utc(ctx.now);
-    m.station = ctx.station;
-    m.job = ctx.job;
-    m.job_sha256 = ctx.job_sha256;
-    m.kind = AuditKind::create;
     m.objects = {{name, "created at " + std::to_string(start)}};
-    const std::int64_t id = tx->insert_mark(m);
-    OutcomeRecord o;
-    o.time_utc = m.time_utc;
-    tx->insert_outcome(id, o);
+    append_admin_row(*tx, ctx, AuditKind::create, std::move(m));
     tx->commit();
     return 0;
   });
@@ -92,16 +104,8 @@ void SerialStore::set(const CounterSpec& spec, std::int64_t value, const ShiftTa
     state->exhausted = false;
     tx->update_counter(spec.name, *state);
     MarkRecord m;
-    m.time_utc = format_utc(ctx.now);
-    m.station = ctx.station;
-    m.job = ctx.job;
-    m.job_sha256 = ctx.job_sha256;
-    m.kind = AuditKind::set;
     m.objects = {{spec.name, "set to " + std::to_string(value)}};
-    const std::int64_t id = tx->insert_mark(m);
-    OutcomeRecord o;
-    o.time_utc = m.time_utc;
-    tx->insert_outcome(id, o);
+    append_admin_row(*tx, ctx, AuditKind::set, std::move(m));
     tx->commit();
     return 0;
   });
@@ -130,19 +134,9 @@ std::vector<Issue> SerialStore::reserve(const CounterSpec& spec, std::int64_t co
     tx->update_counter(spec.name, *state);
     for (const Issue& is : issued) {
       MarkRecord m;
-      m.time_utc = format_utc(ctx.now);
-      m.station = ctx.station;
-      m.job = ctx.job;
-      m.job_sha256 = ctx.job_sha256;
-      m.kind = AuditKind::reserve;
       m.serials[spec.name] = is.value;
       m.note = period.stepped_back ? "clock behind the counter's period " + period.period : "";
-      const std::int64_t id = tx->insert_mark(m);
-      tx->insert_issue(is, id);
-      OutcomeRecord o;
-      o.time_utc = m.time_utc;
-      o.outcome = Outcome::reserved;
-      tx->insert_outcome(id, o);
+      tx->insert_issue(is, append_admin_row(*tx, ctx, AuditKind::reserve, std::move(m), Outcome::reserved));
     }
     tx->commit();
     return issued;

@@ -50,12 +50,16 @@ inline FaultRow run_fault_case(const OpenStore& open, const FaultCase& c, const 
   FaultRow row{c, "", ""};
   std::optional<std::int64_t> mark_id;
   {
+    // The counter is created before the fault is armed: creating it is a write of the same
+    // step (allocate), and the matrix is about the part.
+    open(StoreSettings{})->create_missing(job.used_counters(), job.shifts, ctx);
+  }
+  {
     StoreSettings settings;
     settings.retry = {3, 20, 100};
     settings.journal_dir = journal_dir;
     settings.fault = StoreFaultPlan{c.step, c.kind, 1, c.attempts};
     std::unique_ptr<SerialStore> store = open(settings);
-    store->create_missing(job.used_counters(), job.shifts, ctx);
     store->start_station(ctx);
     SimScanner sim(simulator_options(object_spec(job, job.objects.front(), "", fonts)));
     PartRunner runner(job, fonts, {}, sim, *store, ctx);

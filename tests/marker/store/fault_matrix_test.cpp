@@ -36,7 +36,7 @@ TEST(StoreFaults, SqliteMatrix) {
   // allocation refused, at the outcome kept in the journal and replayed.
   EXPECT_EQ(rows[0].during.substr(0, 4), "done");                            // allocate, locked once
   EXPECT_EQ(rows[1].during.substr(0, 7), "refused");                         // allocate, locked always
-  EXPECT_EQ(rows[7].during, "done, recorded in the store (attempt 2)");      // outcome, full once
+  EXPECT_EQ(rows[8].during, "done, recorded in the store (attempt 2)");      // outcome, full once
   EXPECT_EQ(rows[9].during.substr(0, 28), "done, recorded in the journa");   // outcome, full always
   EXPECT_EQ(rows[9].after, "done (replayed from the journal)");
 }

@@ -5,16 +5,16 @@
 # slower than its -timeout or one that needs more memory than its -rss_limit_mb (a bomb).
 #   scripts/fuzz.sh [SECONDS] [TARGET...]      (TARGET: a name below, e.g. png outline_font)
 # Targets: the stroke-font loaders (jhf, lff, cxf), outline fonts (TrueType / CFF through
-# FreeType), job files, the built-in font's glyph script, the PGM and PNG readers, code data (GS1,
+# FreeType), job files, data lists (CSV), the built-in font's glyph script, the PGM and PNG readers, code data (GS1,
 # UDI, the zint wrapper), head profiles, the option-value parsers (numbers, "CX,CY,R", "WxH", --stock, --travel), the camera
 # option (--camera KEY=VALUE,…), and
 # the LMC driver's readers (lmc_reply: replies and command words; cor_file: EzCad .cor files and
-# captures). All 14 at the default 20 s run for about four and a half minutes, plus the build.
+# captures). All 15 at the default 20 s run for about five minutes, plus the build.
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${MARKER_FUZZ_BUILD:-$root/build-fuzz}
-all_targets=(jhf lff cxf outline_font job glyph_script pgm png option_values camera_option lmc_reply cor_file code_data head_profile)
+all_targets=(jhf lff cxf outline_font job data_list glyph_script pgm png option_values camera_option lmc_reply cor_file code_data head_profile)
 
 seconds=20
 if [[ ${1:-} =~ ^[0-9]+$ ]]; then
@@ -56,6 +56,7 @@ declare -A seeds=(
   [option_values]="$root/tests/fuzz/seeds/option_values/*"
   [camera_option]="$root/tests/fuzz/seeds/camera_option/*"
   [job]="$root/tests/fuzz/job-seeds/*.json"
+  [data_list]="$root/tests/fuzz/seeds/data_list/*"
   [code_data]="$root/tests/fuzz/code_data-seeds/*"
   [head_profile]="$root/tests/fuzz/head_profile-seeds/*.json"
 )

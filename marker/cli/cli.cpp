@@ -6,6 +6,7 @@
 #include "base/error.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/interrupt.hpp"
+#include "marker/store/store_error.hpp"
 
 namespace mark::cli {
 
@@ -34,6 +35,10 @@ int run(int argc, char** argv) {
   } catch (const Interrupted& e) {
     std::cerr << "marker: " << e.what() << "\n";
     return kExitInterrupted;
+  } catch (const StoreError& e) {
+    // A wait for the store that Ctrl-C ended is an interruption, not a failure.
+    std::cerr << "marker: " << e.what() << "\n";
+    return e.kind() == StoreErrorKind::cancelled ? kExitInterrupted : 1;
   } catch (const std::exception& e) {
     std::cerr << "marker: " << e.what() << "\n";
     return 1;

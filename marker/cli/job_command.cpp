@@ -19,6 +19,7 @@
 #include "marker/limits/pen_limits.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/production/part_texts.hpp"
+#include "marker/production/text_repeats.hpp"
 #include "marker/vars/clock.hpp"
 
 namespace mark::cli {
@@ -61,10 +62,13 @@ int run_check(const CheckArgs& a) {
   std::vector<std::string> warnings;
   const JobFonts fonts(job, &warnings);
   for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
+  for (const std::string& w : text_repeat_warnings(job)) std::cerr << "marker: warning: " << w << "\n";
   // The first part of a fresh store (the store, if any, is not read: checking a job touches
-  // nothing but the job and its fonts).
+  // nothing but the job, its fonts and its data list).
   std::map<std::string, std::int64_t> serials;
-  const std::vector<ObjectText> texts = first_part_texts(job, variables, SystemClock().now(), &serials);
+  const std::optional<DataList> data = job.data ? std::optional(load_data_list(job)) : std::nullopt;
+  const std::vector<ObjectText> texts =
+      first_part_texts(job, variables, SystemClock().now(), &serials, data ? &*data : nullptr);
 
   nlohmann::json out = {{"job", job.job_name}, {"file", a.file}, {"head", job.head.name},
                         {"field_mm", job.head.field_mm}, {"spot_diameter_um", job.head.spot_diameter_um},

@@ -32,6 +32,7 @@
 #include "marker/cli/device_factory.hpp"
 #include "marker/cli/head_options.hpp"
 #include "marker/cli/inject_option.hpp"
+#include "marker/cli/production_options.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/lmc_options.hpp"
@@ -287,6 +288,7 @@ int run_mark(const MarkArgs& a) {
   if (!a.dose_png.empty()) check_output_path("--dose-png", a.dose_png, {".png"});
   if (!a.trace.empty()) check_output_path("--trace", a.trace);
   const InjectArg inject = a.inject.empty() ? InjectArg{} : parse_inject(a.inject);
+  if (inject.store) throw InputError("--inject " + a.inject + ": the store applies to a production run: give --job FILE");
   // One plan for the sample-level prediction (quality and code grades), kept for the run when
   // the device takes samples too (the simulated scanner): the text is laid out and planned once
   // per mark.
@@ -464,10 +466,16 @@ Command make_mark_command() {
             add_ranged_option(*sub, "--count", p.count, "--job: parts to mark, each with its next serial numbers",
                               kPartCountRange)
                 ->capture_default_str(),
-            sub->add_option("--store", p.store, "--job: serial store, SQLite file or postgresql://… (default: next to the job)"),
             sub->add_option("--station", p.station, "--job: station name in the audit log (default: host name)"),
             add_ranged_option(*sub, "--remark", p.remark,
-                              "--job: mark the part of audit row ID again (no number consumed)", kAuditRowRange)};
+                              "--job: mark the part of audit row ID again (no number consumed)", kAuditRowRange),
+            sub->add_option("--reason", p.reason, "--job --remark: why the part is marked again (kept in the audit log)"),
+            sub->add_flag("--create-counters", p.create_counters,
+                          "--job: create the job's counters the store does not know, each at its start")};
+        // --store, --store-wait-ms, --store-attempts: the production run's.
+        const std::size_t before = sub->get_options().size();
+        add_store_options(*sub, p.store, true);
+        for (std::size_t i = before; i < sub->get_options().size(); ++i) modes->production.push_back(sub->get_options()[i]);
         add_ranged_option(*sub, "--power", a->laser.power_pct, "laser power, % of the source", kPowerRange)
             ->capture_default_str();
         add_ranged_option(*sub, "--frequency", a->laser.frequency_khz, "pulse repetition rate (Q-switch), kHz",

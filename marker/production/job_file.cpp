@@ -14,6 +14,7 @@
 #include "marker/limits/pen_limits.hpp"
 #include "marker/production/job_parse_context.hpp"
 #include "marker/production/json_reader.hpp"
+#include "marker/vars/data_list.hpp"
 
 namespace mark {
 namespace {
@@ -251,10 +252,25 @@ JobFile parse_job(std::string_view text, const std::string& source) {
     JsonReader counters = top.object("counters");
     for (const auto& [k, v] : top.raw("counters")->items()) {
       check_name(counters, k, k, "counter");
-      if (k == "date" || k == "var" || k == "shift")
+      if (k == "date" || k == "var" || k == "shift" || k == "col")
         counters.fail(k, "\"" + k + "\" is a field name of its own; call the counter something else");
       job.counters.emplace(k, parse_counter(counters.object(k), k, job.time_zone));
     }
+  }
+  if (top.has("data")) {
+    JsonReader d = top.object("data");
+    JobDataList list;
+    list.file = d.string("file").value_or("");
+    if (list.file.empty()) d.fail("file", "a data list needs its CSV file");
+    const std::filesystem::path file(list.file);
+    list.path = file.is_absolute() ? list.file : (std::filesystem::path(source).parent_path() / file).string();
+    if (auto delim = d.string("delimiter")) {
+      const auto c = parse_delimiter(*delim);
+      if (!c) d.fail("delimiter", "\"" + *delim + "\" is not a delimiter: \",\", \";\" or \"tab\"");
+      list.delimiter = *c;
+    }
+    d.finish();
+    job.data = list;
   }
   if (top.has("pens")) {
     JsonReader pens = top.object("pens");
@@ -294,6 +310,8 @@ JobFile parse_job(std::string_view text, const std::string& source) {
           o.fail("template", "{" + c + "}: no counter named \"" + c + "\" in \"counters\"");
       if (t.uses(FieldKind::shift) && job.shifts.empty())
         o.fail("template", "{shift} needs the job's \"shifts\" (codes and start times)");
+      if (t.uses(FieldKind::column) && !job.data)
+        o.fail("template", "{col:" + t.columns().front() + "} needs the job's data list (\"data\": {\"file\": …})");
     }
     job.objects.push_back(std::move(obj));
   }

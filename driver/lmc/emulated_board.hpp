@@ -26,6 +26,7 @@
 #include <functional>
 #include <mutex>
 #include <optional>
+#include <ostream>
 #include <span>
 #include <string>
 #include <thread>
@@ -61,6 +62,8 @@ struct BoardVariant {
   std::string_view what;
   void (*apply)(BoardOptions&);
 };
+// A variant prints as its name (logs, and test parameters in CTest's list).
+inline std::ostream& operator<<(std::ostream& os, const BoardVariant& v) { return os << v.name; }
 std::span<const BoardVariant> board_variants();
 // The options with the variant applied; DeviceError naming the known ones for an unknown name.
 BoardOptions with_variant(BoardOptions options, std::string_view name);

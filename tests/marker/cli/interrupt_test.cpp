@@ -104,9 +104,11 @@ TEST(Interrupt, QuietGcodePrintsOnlyWhereItStopped) {
 TEST(Interrupt, PeenAndPreviewStopWithNothingWritten) {
   const fs::path dir = fresh_temp_dir("marker_interrupt_peen");
   const fs::path errors = fresh_temp_dir("marker_interrupt_peen_err") / "stderr.txt";
-  // Continuous dots along 30 rows of a stroke font: tens of thousands of dots to route.
-  const Stopped peen = interrupt_after({"peen", rows("SERIAL 2026-000123 LOT 42", 30), "--font", "builtin", "--height",
-                                        "3", "--pitch", "0.25", "--field", "1000", "--quiet", "-o",
+  // Continuous dots along 80 rows of a stroke font (47 761 dots, near the plan's limit), routed
+  // by all three planners (--compare): over two seconds of work on an idle 2-core machine since
+  // the optimiser became O(N log N), so the signal at 0.8 s always finds it working.
+  const Stopped peen = interrupt_after({"peen", rows("SERIAL 2026-000123 LOT 42", 80), "--font", "builtin", "--height",
+                                        "3", "--pitch", "0.25", "--field", "1000", "--compare", "--quiet", "-o",
                                         (dir / "plan.csv").string(), "--preview", (dir / "plan.svg").string()},
                                        std::chrono::milliseconds(800), errors);
   ASSERT_TRUE(peen.exited);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "marker/job/sim_evaluator.hpp"
 #include "marker/production/part_run.hpp"
 #include "marker/store/digest.hpp"
 #include "marker/store/serial_store.hpp"

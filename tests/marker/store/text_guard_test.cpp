@@ -11,6 +11,7 @@
 
 #include <set>
 
+#include "marker/job/sim_evaluator.hpp"
 #include "marker/production/part_run.hpp"
 #include "marker/production/text_repeats.hpp"
 #include "marker/store/digest.hpp"
@@ -205,12 +206,16 @@ TEST(TextGuard, ClockStepsAcrossEveryKindOfResetNeitherBlockNorRepeat) {
       ASSERT_EQ(r.issues.size(), 1u);
       const Issue& i = r.issues[0];
       EXPECT_TRUE(keys.insert({i.period, i.cycle, i.value}).second);
-      if (!last_period.empty()) EXPECT_GE(i.period, last_period) << "a period went back";
+      if (!last_period.empty()) {
+        EXPECT_GE(i.period, last_period) << "a period went back";
+      }
       last_period = i.period;
       noted_rows += !r.mark.note.empty();
     }
     EXPECT_EQ(noted_rows, noted);
-    if (std::string(c.rules).find("reset") != std::string::npos) EXPECT_GT(noted, 0);
+    if (std::string(c.rules).find("reset") != std::string::npos) {
+      EXPECT_GT(noted, 0);
+    }
   }
 }
 

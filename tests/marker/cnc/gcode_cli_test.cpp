@@ -14,8 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "cnc_checks.hpp"
 #include "../cli_runner.hpp"
+#include "cnc_checks.hpp"
+#include "cnc_files.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cnc/protrusion.hpp"
 #include "tool_render.hpp"
@@ -25,19 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string out_path(const std::string& name) {
-  const fs::path dir = fs::path(MARKER_BINARY_DIR) / "cnc_cli";
-  fs::create_directories(dir);
-  fs::remove(dir / name);
-  return (dir / name).string();
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string out_path(const std::string& name) { return cnc_out_path("cnc_cli", name); }
 
 // The number printed right after `label`, or NaN.
 double number_after(const std::string& text, const std::string& label) {

@@ -15,6 +15,7 @@
 
 #include "../cli_runner.hpp"
 #include "cnc_checks.hpp"
+#include "cnc_files.hpp"
 #include "marker/cli/layout_options.hpp"
 
 namespace mark::test {
@@ -26,19 +27,7 @@ const std::string kNormalCxf = std::string(MARKER_SOURCE_DIR) + "/tests/fonts/da
 const std::string kDejaVu = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 const std::string kSentence = "The quick brown fox jumps over the lazy dog. 0123456789 ABCDEF";  // 62 characters
 
-std::string out_path(const std::string& name) {
-  const fs::path dir = fs::path(MARKER_BINARY_DIR) / "cnc_machine";
-  fs::create_directories(dir);
-  fs::remove(dir / name);
-  return (dir / name).string();
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string out_path(const std::string& name) { return cnc_out_path("cnc_machine", name); }
 
 std::string rows(int n) {
   std::string t;

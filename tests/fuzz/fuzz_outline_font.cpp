@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 
+#include "fonts/error.hpp"
 #include "fuzz_font.hpp"
 
 namespace {

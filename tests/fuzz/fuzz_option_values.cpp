@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #include "base/error.hpp"
@@ -59,8 +60,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   try {
     const mark::Box b = mark::cli::parse_stock(text);
+    // The box's width is (x + w) - x: exact only to the rounding of its corners' magnitude (the
+    // parser checked w itself), so a size counts as inside within a few ulps of that magnitude.
+    const auto size_ok = [](double size, double lo, double hi) {
+      const double ulps = 8 * std::numeric_limits<double>::epsilon() * (std::abs(lo) + std::abs(hi));
+      return mark::kStockSizeRange.contains(size) || mark::kStockSizeRange.contains(size + ulps) ||
+             mark::kStockSizeRange.contains(size - ulps);
+    };
     const double w = b.width(), h = b.height();
-    if (!mark::kStockSizeRange.contains(w) || !mark::kStockSizeRange.contains(h)) broken("a stock size outside its range", w);
+    if (!size_ok(w, b.min.x(), b.max.x()) || !size_ok(h, b.min.y(), b.max.y()))
+      broken("a stock size outside its range", w);
     if (!mark::kPositionRange.contains(b.min.x()) || !mark::kPositionRange.contains(b.min.y()))
       broken("a stock corner outside its range", b.min.x());
   } catch (const mark::InputError&) {

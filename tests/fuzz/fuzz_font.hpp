@@ -13,6 +13,7 @@
 
 #include "base/error.hpp"
 #include "fonts/loaders.hpp"
+#include "fonts/stroke_join.hpp"
 
 namespace mark::fuzz {
 
@@ -60,7 +61,13 @@ inline void check_font(const StrokeFont& font) {
   check_metrics(font);
   Box all;
   for (const auto& [cp, g] : font.glyphs()) all.add(g.bounds());
-  const double gap_tol = 1e-6 * std::max(1.0, std::max(all.width(), all.height()));
+  // The loaders join pieces whose ends lie within the join tolerance of the letter height
+  // (fonts/stroke_join.hpp: the font's cap height, else its drawing's height), so the pen path
+  // may step by that much and no more.
+  const FontMetrics& m = font.metrics();
+  const double height = std::max({m.cap_height, m.standard_height, all.height()});
+  const double gap_tol = 1e-6 * std::max(1.0, std::max(all.width(), all.height())) +
+                         join_tolerance(height) * (1 + 1e-9);
   for (const auto& [cp, g] : font.glyphs()) {
     if (g.code_point != cp) broken("glyph filed under another code point", cp);
     check_glyph(g, cp, gap_tol);

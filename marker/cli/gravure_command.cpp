@@ -91,6 +91,10 @@ void print_summary(const GravureReport& r) {
   print("filters %s (%zu sections): depth error rms %.3f µm, max %.3f µm; drive peak %.1f µm\n",
         std::string(to_string(r.filters)).c_str(), r.bank.sections.size(), r.filtered.depth_error.rms_um,
         r.filtered.depth_error.max_um, r.filtered.drive_peak_um);
+  print("against the cells the image asked for: depth error rms %.3f µm, max %.3f µm; deepest cut %.1f µm "
+        "(full cell %.1f µm)\n",
+        r.filtered.depth_error_vs_cells.rms_um, r.filtered.depth_error_vs_cells.max_um, r.filtered.max_cut_um,
+        r.full_cell_depth_um);
   if (r.unfiltered)
     print("without filters:   depth error rms %.3f µm, max %.3f µm (%.1f× the filtered rms)\n",
           r.unfiltered->depth_error.rms_um, r.unfiltered->depth_error.max_um,

@@ -1,5 +1,6 @@
 #include "marker/gravure/gravure_job.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -20,7 +21,7 @@ namespace {
 EngravingResult engrave(ImageCells& cells, const ToolpathOptions& toolpath_options, const FilterBank* bank,
                         const StylusHeadModel& design_head, SimStylusHead& head, const StylusRunOptions& run,
                         const std::vector<float>& intended, const std::vector<CellFigures>& intended_cells,
-                        std::vector<float>* keep_profile) {
+                        const std::vector<float>& cell_depths, std::vector<float>* keep_profile) {
   EngravingResult r;
   r.advance_samples = latency_samples(bank ? *bank : FilterBank{}, design_head);
   ToolpathOptions options = toolpath_options;
@@ -35,6 +36,7 @@ EngravingResult engrave(ImageCells& cells, const ToolpathOptions& toolpath_optio
   if (r.run.fault) throw DeviceFaultError(*r.run.fault);
   r.depth_error = depth_error(head.cut_profile_um(), intended);
   r.cell_error = cell_error(head.cells(), intended_cells);
+  r.depth_error_vs_cells = cell_depth_error(head.cells(), cell_depths);
   r.drive_peak_um = head.drive_peak_um();
   r.max_cut_um = head.max_cut_um();
   if (keep_profile) *keep_profile = head.cut_profile_um();
@@ -94,6 +96,8 @@ GravureReport run_gravure_job(const GravureJobSpec& spec) {
   const std::vector<float> intended = intended_cut(cells, toolpath_options);
   report.samples = intended.size();
   const std::vector<CellFigures> intended_cells = measure_cells(intended, geometry);
+  const std::vector<float> cell_depths = intended_cell_depths(cells, spec.setup);
+  report.full_cell_depth_um = std::max(spec.setup.ct.full_cell_depth(1), spec.setup.lw.full_cell_depth(1));
 
   // The filters.
   report.filters = spec.filters;
@@ -119,12 +123,12 @@ GravureReport run_gravure_job(const GravureJobSpec& spec) {
   const FilterBank* bank = spec.filters == FilterChoice::off ? nullptr : &report.bank;
 
   report.filtered = engrave(cells, toolpath_options, bank, report.design_head, head, spec.run, intended,
-                            intended_cells, &report.engraved_um);
+                            intended_cells, cell_depths, &report.engraved_um);
   report.counts = report.filtered.counts;
   report.cancelled = report.filtered.run.cancelled;
   if (!report.cancelled && spec.compare_unfiltered && bank) {
     report.unfiltered = engrave(cells, toolpath_options, nullptr, report.design_head, head, spec.run, intended,
-                                intended_cells, nullptr);
+                                intended_cells, cell_depths, nullptr);
     report.cancelled = report.unfiltered->run.cancelled;
   }
   report.intended_um = intended;

@@ -8,7 +8,8 @@
 // designed from the head measured by the automatic tuning, typed in by hand (notches and an
 // emphasis, FIG. 12), or off. The same job is then engraved once more without filters (the
 // comparison the seed's FIG. 9–11 make), and both cut profiles are measured against the
-// intended one.
+// intended one — the toolpath's curve — and cell by cell against the depths the image's grey
+// levels asked for (engraving_compare.hpp).
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,8 +46,9 @@ struct GravureJobSpec {
 
 struct EngravingResult {
   StylusRunResult run;
-  DepthError depth_error;
-  CellError cell_error;
+  DepthError depth_error;            // cut profile against the toolpath's curve
+  CellError cell_error;              // cell figures against the toolpath's curve's
+  DepthError depth_error_vs_cells;   // each cell's deepest cut against the depth its grey level asked for
   double drive_peak_um = 0;
   double max_cut_um = 0;
   double advance_samples = 0;
@@ -66,6 +68,7 @@ struct GravureReport {
   EngravingResult filtered;                  // the job as engraved (with `bank`)
   std::optional<EngravingResult> unfiltered; // the comparison run
   std::vector<float> intended_um, engraved_um;  // cut profiles, for the preview
+  double full_cell_depth_um = 0;             // the deepest cell the setup can ask for (CT or LW)
   bool cancelled = false;
   double wall_time_s = 0;
 };

@@ -94,7 +94,13 @@ nlohmann::json to_json(const GravureJobSpec& spec, const GravureReport& r) {
   j["max_cut_um"] = r.filtered.max_cut_um;
   j["depth_error_um"] = error_json(r.filtered.depth_error);
   j["cell_error"] = cell_error_json(r.filtered.cell_error);
+  // Against what the image asked for (not the toolpath's own curve): issue 23.
+  j["depth_error_vs_cells_rms_um"] = r.filtered.depth_error_vs_cells.rms_um;
+  j["depth_error_vs_cells_max_um"] = r.filtered.depth_error_vs_cells.max_um;
+  j["full_cell_depth_um"] = r.full_cell_depth_um;
   if (r.unfiltered) {
+    j["depth_error_vs_cells_unfiltered_rms_um"] = r.unfiltered->depth_error_vs_cells.rms_um;
+    j["depth_error_vs_cells_unfiltered_max_um"] = r.unfiltered->depth_error_vs_cells.max_um;
     j["depth_error_unfiltered_um"] = error_json(r.unfiltered->depth_error);
     j["cell_error_unfiltered"] = cell_error_json(r.unfiltered->cell_error);
     j["drive_peak_unfiltered_um"] = r.unfiltered->drive_peak_um;

@@ -41,7 +41,7 @@ void StylusToolpath::add_knot(double x, double depth) {
     pending_depth_ = (pending_depth_ + depth) / 2;
     return;
   }
-  if (pending_) spline_.push(pending_x_, pending_depth_);
+  if (pending_) curve_.push(pending_x_, pending_depth_);
   pending_ = true;
   pending_x_ = x;
   pending_depth_ = depth;
@@ -65,9 +65,9 @@ void StylusToolpath::feed() {
   if (n == 0 || cells_planned_ >= cells_) {
     // Lifted after the last cell (a source that ends early ends the toolpath there too).
     add_knot(static_cast<double>(cells_planned_) + 0.5, -options_.setup.lift_um);
-    spline_.push(pending_x_, pending_depth_);
+    curve_.push(pending_x_, pending_depth_);
     pending_ = false;
-    spline_.finish();
+    curve_.finish();
   }
 }
 
@@ -76,8 +76,8 @@ std::size_t StylusToolpath::next(std::span<double> out) {
   for (std::size_t k = 0; k < n; ++k) {
     const double x = (static_cast<double>(next_sample_ + k) + options_.advance_samples) * x_per_sample_;
     if (x > segment_.x1) {
-      while (x > spline_.committed_x()) feed();
-      segment_ = spline_.segment_at(x);
+      while (x > curve_.committed_x()) feed();
+      segment_ = curve_.segment_at(x);
     }
     out[k] = segment_(x);
   }

@@ -1,7 +1,8 @@
 #pragma once
 // The stylus toolpath (the seed's toolpath 64/65), synchronised to the cylinder: cells from a
-// CellSource become control points (control_points.hpp), the control points a cubic spline
-// (cubic_spline.hpp), and the spline is sampled at the stylus clock.
+// CellSource become control points (control_points.hpp), the control points a monotone cubic
+// (monotone_curve.hpp: it never leaves the depths of the two knots around it), and the curve is
+// sampled at the stylus clock.
 //
 // Synchronisation (FIG. 6): the cylinder turns at a fixed cell rate, so stylus sample n stands
 // for track position x_n = n · f_cell / f_s cells — cell ⌊x_n⌋, at the fraction x_n − ⌊x_n⌋ of it
@@ -19,7 +20,7 @@
 
 #include "marker/gravure/cell_setup.hpp"
 #include "marker/gravure/cell_source.hpp"
-#include "marker/gravure/cubic_spline.hpp"
+#include "marker/gravure/monotone_curve.hpp"
 #include "marker/gravure/drive_source.hpp"
 
 namespace mark {
@@ -59,7 +60,7 @@ class StylusToolpath : public DriveSource {
   const CellCounts& counts() const { return counts_; }
 
  private:
-  void feed();  // plans the next cells and appends their control points to the spline
+  void feed();  // plans the next cells and appends their control points to the curve
   void add_knot(double x, double depth);
 
   CellSource& source_;
@@ -69,8 +70,8 @@ class StylusToolpath : public DriveSource {
   std::uint64_t next_sample_ = 0;
   std::uint64_t cells_planned_ = 0;
   double x_per_sample_;
-  StreamingSpline spline_;
-  StreamingSpline::Segment segment_;  // the piece the next sample falls in
+  MonotoneCurve curve_;
+  MonotoneCurve::Segment segment_;  // the piece the next sample falls in
   std::vector<CellValues> batch_;
   bool pending_ = false;  // a knot held back so a coincident one can merge with it
   double pending_x_ = 0, pending_depth_ = 0;

@@ -5,7 +5,7 @@
 // the filters off, cut hundreds of µm deep where the full cell is 40 µm.
 //
 // Set MARKER_GRAVURE_TEST_SET=DIR to keep the image and mask there (test_set.pgm,
-// test_set_mask.pgm) for `marker gravure`.
+// test_set_mask.pgm; also wedge.pgm and wedge_mask.pgm) for `marker gravure`.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -27,6 +27,9 @@ GravureJobSpec test_set_job(bool with_mask) {
   if (const char* dir = std::getenv("MARKER_GRAVURE_TEST_SET")) {
     test::save_pgm(spec.image, std::string(dir) + "/test_set.pgm");
     test::save_pgm(mask, std::string(dir) + "/test_set_mask.pgm");
+    GrayImage wedge_mask;  // and the wedge of the other gravure suites, for docs/gravure.md's figures
+    test::save_pgm(test::wedge_and_lines(280, 112, &wedge_mask), std::string(dir) + "/wedge.pgm");
+    test::save_pgm(wedge_mask, std::string(dir) + "/wedge_mask.pgm");
   }
   return spec;
 }

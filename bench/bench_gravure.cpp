@@ -1,8 +1,8 @@
 // Gravure: image to filtered stylus samples, samples per second on one core (target ≥ 20 M/s,
 // 100× the 200 kHz stylus clock). A 40 × 40 mm photograph-like image (smooth tone with a
 // line-work band, 4 px a cell at 70 lines/cm: 78 400 cells, 2.5 M samples) runs through the whole
-// producer — cells, control points, the windowed spline solved with Eigen, sampling at 200 kHz,
-// the notch / emphasis biquads — into a reused 4096-sample block, the way the job feeds the line
+// producer — cells, control points, the monotone cubic through them, sampling at 200 kHz, the
+// notch / emphasis biquads — into a reused 4096-sample block, the way the job feeds the line
 // memory. Parts are timed alone too: the toolpath without filters, and the filters alone.
 #include <benchmark/benchmark.h>
 

@@ -21,12 +21,12 @@ namespace {
 
 // Every sample of a curve over all knots, checked piece by piece against the two knots' range.
 template <class Curve>
-double worst_overshoot(Curve& curve, const std::vector<double>& x, const std::vector<double>& y, int per_piece = 50) {
+double worst_overshoot(Curve&& curve, const std::vector<double>& x, const std::vector<double>& y, int per_piece = 50) {
   double worst = 0;
   for (std::size_t j = 0; j + 1 < x.size(); ++j) {
     const double lo = std::min(y[j], y[j + 1]), hi = std::max(y[j], y[j + 1]);
     for (int k = 0; k <= per_piece; ++k) {
-      const double v = curve.eval(x[j] + (x[j + 1] - x[j]) * k / per_piece);
+      const double v = curve(x[j] + (x[j + 1] - x[j]) * k / per_piece);
       worst = std::max({worst, v - hi, lo - v});
     }
   }
@@ -65,12 +65,9 @@ TEST(MonotoneCurve, NeverLeavesTheRangeOfTwoKnotsOnRandomKnots) {
   MonotoneCurve c;
   for (std::size_t i = 0; i < x.size(); ++i) c.push(x[i], y[i]);
   c.finish();
-  EXPECT_LT(worst_overshoot(c, x, y), 1e-9);
+  EXPECT_LT(worst_overshoot([&](double t) { return c.eval(t); }, x, y), 1e-9);
   // The natural spline through the same knots does overshoot (the defect this curve replaces).
-  StreamingSpline s;
-  for (std::size_t i = 0; i < x.size(); ++i) s.push(x[i], y[i]);
-  s.finish();
-  EXPECT_GT(worst_overshoot(s, x, y), 10);
+  EXPECT_GT(worst_overshoot(CubicSpline(x, y), x, y), 10);
 }
 
 TEST(MonotoneCurve, StreamsWithBoundedLookAheadAndRefusesBadKnots) {
@@ -99,7 +96,7 @@ TEST(MonotoneCurve, LongStreamsMatchAShortEvaluationAfterCompaction) {
   }
   for (std::size_t i = 0; i < x.size(); ++i) c.push(x[i], y[i]);
   c.finish();
-  EXPECT_LT(worst_overshoot(c, x, y, 4), 1e-9);
+  EXPECT_LT(worst_overshoot([&](double t) { return c.eval(t); }, x, y, 4), 1e-9);
   EXPECT_EQ(c.knots(), x.size());
 }
 
@@ -140,7 +137,6 @@ TEST(StylusToolpath, ASingleCellBesideChannelCellsCutsNoDeeperThanTheFullCell) {
     deepest = std::max(deepest, *std::max_element(d.begin(), d.end()));
     highest = std::min(highest, *std::min_element(d.begin(), d.end()));
     // The seed's natural spline through the same control points, for the record.
-    StreamingSpline natural;
     std::vector<double> x{-0.5}, y{-setup.lift_um};
     int cell = 0;
     for (const CellValues& c : {black, black, single, black, black}) {
@@ -153,10 +149,10 @@ TEST(StylusToolpath, ASingleCellBesideChannelCellsCutsNoDeeperThanTheFullCell) {
       }
       ++cell;
     }
-    for (std::size_t i = 0; i < x.size(); ++i) natural.push(x[i], y[i]);
-    natural.push(5.5, -setup.lift_um);
-    natural.finish();
-    for (double t = 0; t < 5; t += 1.0 / 32) natural_deepest = std::max(natural_deepest, natural.eval(t));
+    x.push_back(5.5);
+    y.push_back(-setup.lift_um);
+    const CubicSpline natural(x, y);
+    for (double t = 0; t < 5; t += 1.0 / 32) natural_deepest = std::max(natural_deepest, natural(t));
   }
   EXPECT_LE(deepest, setup.ct.full_cell_depth(1) + 1e-9);
   EXPECT_GE(highest, -setup.lift_um - 1e-9);

@@ -52,43 +52,6 @@ TEST(CubicSpline, StraightLineStaysStraight) {
   for (double x = 0; x <= 4; x += 0.05) EXPECT_NEAR(s(x), 1 + 2 * x, 1e-12);
 }
 
-TEST(StreamingSpline, WindowsMatchTheWholeSolution) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> step(0.02, 0.6), value(-5, 45);
-  std::vector<double> x{0}, y{-5};
-  for (int i = 0; i < 3000; ++i) {
-    x.push_back(x.back() + step(rng));
-    y.push_back(value(rng));
-  }
-  const CubicSpline whole(x, y);
-  StreamingSpline stream(64, 32);  // small windows: many seams
-  std::size_t pushed = 0;
-  double worst = 0;
-  for (double t = 0; t < x.back(); t += 0.013) {
-    while (t > stream.committed_x()) {
-      if (pushed < x.size()) {
-        stream.push(x[pushed], y[pushed]);
-        ++pushed;
-      } else {
-        stream.finish();
-      }
-    }
-    worst = std::max(worst, std::abs(stream.eval(t) - whole(t)));
-  }
-  EXPECT_LT(worst, 1e-8);
-}
-
-TEST(StreamingSpline, RefusesKnotsOutOfOrderAndReadsBeyondTheCommitted) {
-  StreamingSpline s;
-  s.push(0, 1);
-  EXPECT_THROW(s.push(0, 2), std::invalid_argument);
-  s.push(1, 2);
-  EXPECT_THROW(s.eval(0.5), std::logic_error);  // nothing committed yet
-  s.finish();
-  EXPECT_NEAR(s.eval(0.5), 1.5, 1e-12);
-  EXPECT_NEAR(s.eval(7), 2, 1e-12);  // past the end: the last value
-}
-
 TEST(Synchronisation, SampleToCellAndPosition) {
   // 6.25 kHz: the seed's 32 samples a cell.
   EXPECT_EQ(first_sample_of_cell(1, 6250), 32u);

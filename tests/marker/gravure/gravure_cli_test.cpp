@@ -40,6 +40,13 @@ TEST(GravureCli, JsonHoldsTheJobsFigures) {
   const double rms = j["depth_error_um"]["rms"], raw = j["depth_error_unfiltered_um"]["rms"];
   EXPECT_GT(raw / rms, 3);
   EXPECT_GE(j["depth_error_um"]["max"].get<double>(), rms);
+  // Against the cells the image asked for (issue 23): filtered, within a few µm of cells up to
+  // 40 µm deep, and no cut deeper than the full cell plus the head's residual.
+  EXPECT_EQ(j["full_cell_depth_um"], 40.0);
+  EXPECT_LT(j["depth_error_vs_cells_rms_um"].get<double>(), 2.0);
+  EXPECT_GE(j["depth_error_vs_cells_max_um"].get<double>(), j["depth_error_vs_cells_rms_um"].get<double>());
+  EXPECT_GT(j["depth_error_vs_cells_unfiltered_rms_um"].get<double>(), j["depth_error_vs_cells_rms_um"].get<double>());
+  EXPECT_LE(j["max_cut_um"].get<double>(), 41.0);
   EXPECT_EQ(j["filters"]["source"], "nominal");
   EXPECT_EQ(j["filters"]["sections"].size(), 4u);
   EXPECT_EQ(j["filters"]["sections"][0]["kind"], "notch");

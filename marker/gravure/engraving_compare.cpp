@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "marker/gravure/control_points.hpp"
+
 namespace mark {
 namespace {
 

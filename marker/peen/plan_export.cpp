@@ -80,7 +80,7 @@ void write_plan_gcode(std::ostream& out, const PeenPlan& plan, const DotText& te
 
 void export_plan(const std::string& path, const PeenPlan& plan, const DotText& text,
                  const GantryConfig& gantry) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = output_format(path, kPlanExtensions);  // "-": CSV to standard output
   if (std::find(kPlanExtensions.begin(), kPlanExtensions.end(), ext) == kPlanExtensions.end())
     throw InputError("output file '" + path + "': the name must end in .csv, .ngc, .nc or .gcode");
   std::ostringstream out;

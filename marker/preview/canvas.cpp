@@ -28,7 +28,7 @@ Canvas::Canvas(const std::string& path, const Box& view, double px_per_mm, std::
 
 Canvas::Canvas(const std::string& path, int w, int h, std::vector<LegendEntry> legend)
     : path_(path), legend_(std::move(legend)), px_per_mm_(1) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = output_format(path, {".svg", ".png"});  // "-": SVG to standard output
   if (ext == ".png") {
     png_ = true;
   } else if (ext != ".svg") {

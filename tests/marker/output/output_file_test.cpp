@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/types.h>
 
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 
@@ -98,6 +100,79 @@ TEST(OutputFile, PathsAreCheckedWithoutLeavingAnything) {
   EXPECT_EQ(error_of([] { check_output_path("-o", "/etc/hostname/x"); }),
             "-o '/etc/hostname/x': '/etc/hostname' is not a directory");
   EXPECT_EQ(error_of([] { check_output_path("-o", ""); }), "-o: the file name is empty");
+}
+
+// A link is written through: its target gets the bytes (atomically, as any file), the link stays
+// a link — through a chain of links, relative and absolute, and to a target not there yet.
+TEST(OutputFile, WritesThroughSymbolicLinksToTheirTarget) {
+  const fs::path dir = fresh_dir();
+  fs::create_directories(dir / "real");
+  write_file_whole((dir / "real/plan.ngc").string(), "old");
+  fs::create_symlink("real/plan.ngc", dir / "link.ngc");        // relative to the link's folder
+  fs::create_symlink(dir / "link.ngc", dir / "link2.ngc");      // absolute, to a link
+  EXPECT_NO_THROW(check_output_path("-o", (dir / "link2.ngc").string(), {".ngc"}));
+  write_file_whole((dir / "link2.ngc").string(), "G0 X1\n");
+  EXPECT_TRUE(fs::is_symlink(dir / "link.ngc"));
+  EXPECT_TRUE(fs::is_symlink(dir / "link2.ngc"));
+  EXPECT_EQ(slurp(dir / "real/plan.ngc"), "G0 X1\n");
+  EXPECT_EQ(entries(dir / "real"), 1u) << "no temporary file left beside the target";
+  EXPECT_EQ(entries(dir), 3u);
+  // A dangling link: its target is created.
+  fs::create_symlink("real/new.svg", dir / "new.svg");
+  write_file_whole((dir / "new.svg").string(), "<svg/>");
+  EXPECT_TRUE(fs::is_symlink(dir / "new.svg"));
+  EXPECT_EQ(slurp(dir / "real/new.svg"), "<svg/>");
+  // A loop is named, not followed for ever.
+  fs::create_symlink("loop-b", dir / "loop-a");
+  fs::create_symlink("loop-a", dir / "loop-b");
+  EXPECT_EQ(error_of([&] { write_file_whole((dir / "loop-a").string(), "x"); }),
+            "output file '" + (dir / "loop-a").string() + "': too many levels of symbolic links");
+}
+
+// A FIFO or a device node is refused, named, before any work; the node stays what it was.
+TEST(OutputFile, RefusesFifosAndDevices) {
+  const fs::path dir = fresh_dir(), fifo = dir / "pipe.ngc";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string why = ", not a regular file: give a file name, or - for standard output";
+  EXPECT_EQ(error_of([&] { check_output_path("--output", fifo.string()); }),
+            "--output '" + fifo.string() + "': is a named pipe (FIFO)" + why);
+  EXPECT_EQ(error_of([&] { write_file_whole(fifo.string(), "G0"); }),
+            "output file '" + fifo.string() + "': is a named pipe (FIFO)" + why);
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  for (const char* device : {"/dev/null", "/dev/full"}) {
+    EXPECT_EQ(error_of([&] { check_output_path("--preview", device); }),
+              std::string("--preview '") + device + "': is a device" + why);
+    EXPECT_EQ(error_of([&] { write_file_whole(device, "x"); }), std::string("output file '") + device + "': is a device" + why);
+    EXPECT_TRUE(fs::is_character_file(device));
+  }
+  // Through a link to a device too.
+  fs::create_symlink("/dev/null", dir / "null.csv");
+  EXPECT_EQ(error_of([&] { check_output_path("-o", (dir / "null.csv").string()); }),
+            "-o '" + (dir / "null.csv").string() + "': is a device" + why);
+  EXPECT_EQ(entries(dir), 2u);
+}
+
+// "-" is standard output: the bytes go there whole, and while a command has claimed it for a
+// file, what else it prints goes to standard error.
+TEST(OutputFile, DashIsStandardOutput) {
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  std::string error;
+  try {
+    check_output_path("--output", "-", {".svg", ".png"});  // no extension needed
+    std::cout << "a report line\n";
+    write_file_whole("-", std::string("<svg>\0</svg>", 12));
+  } catch (const InputError& e) {
+    error = e.what();
+  }
+  release_standard_output();
+  const std::string out = testing::internal::GetCapturedStdout();
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(error, "");
+  EXPECT_EQ(out, std::string("<svg>\0</svg>", 12));
+  EXPECT_EQ(err, "a report line\n");
+  EXPECT_EQ(output_format("-", {".svg", ".png"}), ".svg");
+  EXPECT_EQ(output_format("a.PNG", {".svg", ".png"}), ".png");
 }
 
 TEST(OutputFile, LowerExtension) {

@@ -55,7 +55,13 @@ TEST_P(IdealTool, RadiusWithinOnePixel) {
 INSTANTIATE_TEST_SUITE_P(SizesBlurFormats, IdealTool,
                          ::testing::Values(CircleCase{20, 0, false}, CircleCase{20, 1.5, true},
                                            CircleCase{75, 0, true}, CircleCase{75, 1.5, false},
-                                           CircleCase{240, 1.0, false}, CircleCase{240, 2.5, true}));
+                                           CircleCase{240, 1.0, false}, CircleCase{240, 2.5, true}),
+                         // "r75_blur15_png": radius in pixels, blur in tenths of a pixel, format.
+                         [](const ::testing::TestParamInfo<CircleCase>& info) {
+                           return "r" + std::to_string(static_cast<int>(info.param.radius_px)) + "_blur" +
+                                  std::to_string(static_cast<int>(10 * info.param.blur_px)) +
+                                  (info.param.png ? "_png" : "_pgm");
+                         });
 
 // The patent's second fit: scans running tangentially along the edge are dropped, and the fit
 // stays as good. (Measured here: with sub-pixel interpolation a grazing scan's radial error is

@@ -58,7 +58,10 @@ TEST_P(Series, EqualsAFreshCompileAtEveryPartAndLevel) {
 
 INSTANTIATE_TEST_SUITE_P(Corners, Series,
                          testing::Values(CornerStrategy::blanking, CornerStrategy::delays,
-                                         CornerStrategy::none));
+                                         CornerStrategy::none),
+                         [](const testing::TestParamInfo<CornerStrategy>& info) {
+                           return std::string(to_string(info.param));
+                         });
 
 TEST(JobCompiler, OnlyTheChangedGlyphsArePlannedAgain) {
   JobCompiler compiler(series_spec(), DeviceLevel::samples);

@@ -55,7 +55,10 @@ TEST_P(Incremental, SerialSeriesMatchesFreshLayoutAndPlan) {
 
 INSTANTIATE_TEST_SUITE_P(Corners, Incremental,
                          testing::Values(CornerStrategy::blanking, CornerStrategy::delays,
-                                         CornerStrategy::none));
+                                         CornerStrategy::none),
+                         [](const testing::TestParamInfo<CornerStrategy>& info) {
+                           return std::string(to_string(info.param));
+                         });
 
 TEST(Incremental, CentredTextThatChangesWidthIsReplacedWhole) {
   const auto font = open_font(kBuiltinFontName);

@@ -6,6 +6,7 @@
 #include "base/error.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/interrupt.hpp"
+#include "marker/output/output_file.hpp"
 
 namespace mark::cli {
 
@@ -28,6 +29,10 @@ int run(int argc, char** argv) {
   // exits 130 with nothing half-done.
   interrupt_flag().reset();
   InterruptScope interrupts(interrupt_flag());
+  // A command that wrote a file to standard output ("-o -") gets it back when it ends.
+  struct ReleaseStandardOutput {
+    ~ReleaseStandardOutput() { release_standard_output(); }
+  } release;
   try {
     for (Command& c : commands)
       if (c.parsed()) return c.run();

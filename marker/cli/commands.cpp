@@ -19,6 +19,7 @@ std::vector<Command> all_commands() {
   c.push_back(make_devices_command());
   c.push_back(make_frame_command());
   c.push_back(make_head_command());
+  c.push_back(make_options_command());
   return c;
 }
 

@@ -37,6 +37,7 @@ Command make_log_command();
 Command make_devices_command();
 Command make_frame_command();
 Command make_head_command();
+Command make_options_command();
 
 std::vector<Command> all_commands();
 

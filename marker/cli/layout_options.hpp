@@ -12,34 +12,38 @@
 #include "marker/cli/hatch_options.hpp"
 #include "marker/fill/fill.hpp"
 #include "marker/layout/layout.hpp"
+#include "marker/limits/head_settings.hpp"
+#include "marker/limits/layout_settings.hpp"
 
 namespace mark::cli {
 
 struct LayoutArgs {
-  std::string font = "builtin";
-  double height_mm = 5.0;
-  double width_factor = 1.0;
-  double gap_mm = 0.0;
-  double line_spacing = 1.0;
-  std::string align = "left";
-  double x_mm = 0.0;
-  double y_mm = 0.0;
-  double angle_deg = 0.0;
+  // Defaults from the settings table (marker/limits/layout_settings.hpp).
+  std::string font{kFont.value};
+  double height_mm = *kHeight.value;
+  double width_factor = *kWidthFactor.value;
+  double gap_mm = *kGap.value;
+  double line_spacing = *kLineSpacing.value;
+  std::string align{kAlign.value};
+  double x_mm = *kX.value;
+  double y_mm = *kY.value;
+  double angle_deg = *kAngle.value;
   std::string circle;  // "CX,CY,R"
   std::optional<double> start_angle_deg;
   bool self_centred = false;
   bool inside = false;
-  double italic_deg = 0.0;
+  double italic_deg = *kItalic.value;
   bool mirror = false;
   bool replace_missing = false;
-  double field_mm = 110.0;
+  double field_mm = *kField.value;
   // Filled outline fonts.
-  std::string fill = "none";       // none | hatch
-  std::string fill_rule = "nonzero";
+  std::string fill{kFill.value};  // none | hatch
+  std::string fill_rule{kFillRule.value};
   HatchArgs hatch;
 };
 
-void add_layout_options(CLI::App& app, LayoutArgs& args);
+// `font`: the font setting the command takes (peen's dot fonts have their own).
+void add_layout_options(CLI::App& app, LayoutArgs& args, const Text& font = kFont);
 void add_fill_options(CLI::App& app, LayoutArgs& args);
 
 // The fill to apply, or nothing for --fill none; insets default to `beam_radius_mm`. Throws

@@ -6,17 +6,19 @@
 #include <string>
 
 #include "driver/lmc/lmc_device.hpp"
+#include "marker/limits/device_settings.hpp"
 
 namespace mark::cli {
 
 struct LmcArgs {
+  // Defaults from the settings table (marker/limits/device_settings.hpp).
   std::string cor_file;
   bool swap_xy = false, flip_x = false, flip_y = false;
-  std::string source = "fiber";
-  int laser_bit = 0;
-  int red_bit = 8;
-  std::string polygon_unit = "10us";
-  double chord_tolerance_um = 5;
+  std::string source{kLaserSource.value};
+  int laser_bit = static_cast<int>(*kLaserBit.value);
+  int red_bit = static_cast<int>(*kRedBit.value);
+  std::string polygon_unit{kPolygonDelayUnits.value};
+  double chord_tolerance_um = *kChordTolerance.value;
 };
 
 void add_lmc_options(CLI::App& app, LmcArgs& args);

@@ -5,7 +5,9 @@
 
 #include "base/error.hpp"
 #include "marker/cli/commands.hpp"
+#include "marker/cli/option_ranges.hpp"
 #include "marker/cli/production_options.hpp"
+#include "marker/limits/production_settings.hpp"
 #include "marker/store/audit_format.hpp"
 #include "marker/store/open_store.hpp"
 #include "marker/store/utc_time.hpp"
@@ -23,7 +25,7 @@ Command make_log_command() {
         auto* sub = app.add_subcommand("log", "print the audit log of a serial store");
         sub->add_option("--job", a->job, "job file (its store is next to it)");
         sub->add_option("--store", a->store, "serial store: SQLite file or postgresql://…");
-        sub->add_option("--since", a->since, "rows from this UTC time on: 2026-03-05, 2026-03-05T06:00, or back from now: 90m, 12h, 7d");
+        add_setting(*sub, kSince, a->since);
         auto* json = sub->add_flag("--json", a->json, "JSON Lines: one object per row");
         auto* csv = sub->add_flag("--csv", a->csv, "CSV with a header row");
         json->excludes(csv);

@@ -176,13 +176,14 @@ TEST(CliRefusal, MarkOptions) {
        "8.000 mm; the field is 110.000 mm square (±55.000 mm); lower --height, move the text with --x, --y or "
        "--align, or enlarge --field"},
       {{"mark", "X", "--run-out", "1e300"}, "--run-out: 1e300 is outside the range 0 to 10 mm"},
-      {{"mark", "X", "--tick", "0"}, "--tick: 0 is outside the range 1 to 1000 µs"},
+      {{"mark", "X", "--tick", "0"}, "--tick: 0 is outside the range 1 to 24 µs (20 % of head SL10's τ)"},
       {{"mark", "X", "--speed", "1e300"},
-       "--speed: 1e300 is outside the range above 0, up to 19200 mm/s (head SL10's positioning limit)"},
+       "--speed: 1e300 is outside the range 0.001 to 19200 mm/s (head SL10's positioning limit)"},
       {{"mark", "X", "--speed", "fast", "--head", "SL14"},
-       "--speed: 'fast' is neither auto nor a number (range: above 0, up to 16000 mm/s (head SL14's positioning "
+       "--speed: 'fast' is neither auto nor a number (range: 0.001 to 16000 mm/s (head SL14's positioning "
        "limit))"},
-      {{"mark", "X", "--jump-speed", "1e9"}, "--jump-speed: 1e9 is outside the range 1 to 100000 mm/s"},
+      {{"mark", "X", "--jump-speed", "1e9"},
+       "--jump-speed: 1e9 is outside the range 1 to 19200 mm/s (head SL10's positioning limit)"},
       {{"mark", "X", "--jump-speed", "50000"},
        "--jump-speed: 50000 is outside the range 1 to 19200 mm/s (head SL10's positioning limit)"},
       {{"mark", "X", "--dose-png", "OUT/dose.svg"},
@@ -207,9 +208,13 @@ TEST(CliRefusal, JobNewAndSerialOptions) {
        "--height: 1e9 is outside the range 0.01 to 10000 mm"},
       {{"job", "new", "-o", "OUT/j.txt", "--text", "A"},
        "--output '" + (temp_dir() / "out/j.txt").string() + "': the name must end in .json"},
-      // Limits that depend on the head are the job file's: the message names the key it wrote.
+      // Limits that depend on the head are the job file's, in the same words.
       {{"job", "new", "-o", "OUT/j.json", "--text", "A", "--speed", "20000"},
-       (temp_dir() / "out/j.json").string() + ": pens.default.speed_mm_s: 20000 mm/s is outside 0.001 to 19200 mm/s"},
+       "--speed: 20000 is outside the range 0.001 to 19200 mm/s (head SL10's positioning limit)"},
+      {{"job", "new", "-o", "OUT/j.json", "--text", "A", "--jump-speed", "20000"},
+       (temp_dir() / "out/j.json").string() +
+           ": pens.default.jump_speed_mm_s: 20000 is outside the range 1 to 19200 mm/s (head SL10's positioning "
+           "limit)"},
       {{"serial", "reserve", "sn", "0", "--store", "OUT/s.sqlite"}, "count: 0 is outside the range 1 to 1000000"},
   });
 }

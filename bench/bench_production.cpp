@@ -13,6 +13,7 @@
 
 #include <filesystem>
 
+#include "marker/job/sim_evaluator.hpp"
 #include "marker/production/part_run.hpp"
 #include "marker/store/digest.hpp"
 #include "marker/store/open_store.hpp"
@@ -105,8 +106,10 @@ BENCHMARK(BM_MarkNoQuality)->Unit(benchmark::kMillisecond)->MinTime(2)->UseRealT
 void BM_Part(benchmark::State& state) {
   Line line;
   PartRunner runner(line.job, line.fonts, {}, line.scanner, *line.store, line.context);
+  SimEvaluator evaluator(line.scanner);  // quality figures included, as the command line marks
   PartOptions options;
   options.job.virtual_time = true;
+  options.job.evaluator = &evaluator;
   double device_s = 0;
   for (auto _ : state) {
     const PartResult p = runner.mark_next(SystemClock().now(), options);

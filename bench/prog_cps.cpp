@@ -38,6 +38,7 @@
 #include "marker/job/head_pen.hpp"
 #include "marker/job/intended_strokes.hpp"
 #include "marker/job/job.hpp"
+#include "marker/job/sim_evaluator.hpp"
 #include "marker/locus/locus_generator.hpp"
 #include "marker/plan/stroke.hpp"
 

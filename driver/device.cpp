@@ -2,6 +2,14 @@
 
 namespace mark {
 
+DeviceStateError::DeviceStateError(std::string device, std::string call, DeviceState state,
+                                   std::string_view why)
+    : DeviceError(device + ": " + call + " while " + std::string(to_string(state)) + "; " +
+                  std::string(why)),
+      device_(std::move(device)),
+      call_(std::move(call)),
+      state_(state) {}
+
 DeviceFault fault_from(std::exception_ptr error, std::uint64_t at) {
   try {
     std::rethrow_exception(error);

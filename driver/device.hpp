@@ -1,13 +1,39 @@
 #pragma once
 // One interface for every device the engine drives: the simulated scanner, a USB vector board
-// (BJJCZ LMC), a point DAC, the gravure stylus head. A device runs jobs through one lifecycle
+// (BJJCZ LMC), a point DAC, the gravure stylus head. Every device runs jobs through one
+// lifecycle, the same state machine (driver/lifecycle.hpp, which each device embeds):
 //
-//   idle ─begin_job─► running ─end_job─► done | failed        abort() from any state and any
-//     ▲                  │                                      thread: laser (stylus) off now,
-//     └──── reset() ◄────┴──── aborted | failed | done          and it stays off until reset()
+//   idle ─begin_job─► running ─end_job─► done | failed
+//    ▲  │                │  └──(a fault)──► failed
+//    │  └──abort()──┐    └──abort()──► aborted          (laser off now, and off until reset)
+//    │              ▼
+//    └──reset()── done | aborted | failed               (clears the fault)
 //
-// and takes its work at one of two levels (describe().level):
+// - begin_job only from idle. From running or a final state it throws DeviceStateError: the
+//   job before must end and, once ended, the device must be reset (a station re-arms it).
+// - end_job from running waits for the device and gives done, aborted (abort() or the host
+//   halting it: the drain on a stop or an underrun) or failed (a fault). From a final state it
+//   gives the same report again; from idle (no job) it throws DeviceStateError.
+// - abort() from idle or running → aborted, laser off at once and for the rest of the job;
+//   from a final state it changes nothing (the laser is already off, a failed job keeps its
+//   fault). noexcept, never blocks for long, callable from any thread (a station calls it from
+//   its network thread) and any number of times. The first ending wins: a job aborted stays
+//   aborted when something fails afterwards (the failure is the stop's consequence), a job
+//   failed stays failed when it is aborted afterwards.
+// - reset() from a final state → idle; idle stays idle; while running it throws
+//   DeviceStateError (abort the job or end it first). It may throw DeviceFaultError when the
+//   device cannot be brought back (a board that was unplugged).
+// - Feeding work outside a running job: write() (samples) throws DeviceStateError, so the drain
+//   stops at once and halts the device; submit() (commands) after abort() sends nothing and
+//   returns, so the producer's loop runs out; submit() in any other state but running throws
+//   DeviceStateError. The simulated scanner alone also takes samples while idle, as a bare sink
+//   (an implicit job: the emulated board's plant, verification runs).
+// - Misuse of the lifecycle throws one type, DeviceStateError, naming the device, the call and
+//   the state. (A job that does not fit the device — its field, its pens, its length — is not
+//   misuse of the lifecycle: begin_job refuses it with the device's own error and the device
+//   stays idle.)
 //
+// Devices take their work at one of two levels (describe().level):
 // - samples: fixed-rate devices (the simulated scanner, an XY2-100 output, the gravure stylus).
 //   They are a SampleDevice<T>: the line memory and the fixed-rate drain feed them T samples
 //   (ringbuffer/sink.hpp), and the drain emits the sample type's safe sample (laser off, stylus
@@ -75,6 +101,21 @@ class DeviceFaultError : public DeviceError {
 
  private:
   DeviceFault fault_;
+};
+
+// Misuse of the lifecycle: a call the device's state does not allow (begin_job while running,
+// reset while running, end_job with no job, write after the job ended). One type for every
+// device; the message names the device, the call and the state.
+class DeviceStateError : public DeviceError {
+ public:
+  DeviceStateError(std::string device, std::string call, DeviceState state, std::string_view why);
+  const std::string& device() const { return device_; }
+  const std::string& call() const { return call_; }
+  DeviceState state() const { return state_; }
+
+ private:
+  std::string device_, call_;
+  DeviceState state_;
 };
 
 // The fault an exception from a device stands for (the drain keeps the exception a device threw):
@@ -153,30 +194,49 @@ struct DeviceStatus {
   std::uint64_t progress = 0;    // samples output or commands executed in this job
 };
 
+class CommandDevice;
+template <class T>
+class SampleDevice;
+
+// The transitions and what each call may throw are the lifecycle at the top of this file.
 class Device {
  public:
   virtual ~Device() = default;
 
   virtual DeviceDescription describe() const = 0;
-  // idle → running. Throws DeviceFaultError (the device cannot start) or InputError (the
-  // header does not fit the device, e.g. a field larger than the device's).
+  // idle → running. Throws DeviceStateError in any other state; DeviceFaultError (the device
+  // cannot start) or the device's own error for a header that does not fit it (then it stays
+  // idle).
   virtual void begin_job(const JobHeader& header) = 0;
   // Waits until the device has finished everything it was given (or stopped); running → done,
-  // or the state abort()/a fault left. Never throws for a fault: the report carries it.
+  // or the state abort()/a fault left. Never throws for a fault: the report carries it. Throws
+  // DeviceStateError when no job was begun (idle).
   virtual DeviceReport end_job() = 0;
   // Any state, any thread, any time: laser (stylus) off now; the rest of the job is not
   // executed. Idempotent. Must not throw or block for long (a USB stop is sent, not awaited).
   virtual void abort() noexcept = 0;
   virtual DeviceStatus status() const = 0;
-  // done / aborted / failed → idle (clears the fault); idle stays idle. Throws DeviceFaultError
-  // if the device cannot be brought back (e.g. it was unplugged).
+  // done / aborted / failed → idle (clears the fault); idle stays idle; DeviceStateError while
+  // running. Throws DeviceFaultError if the device cannot be brought back (e.g. unplugged).
   virtual void reset() = 0;
+
+  // What the job runner feeds: samples of type T (null if the device takes another kind or
+  // commands), or device commands (null for a sample-level device).
+  template <class T>
+  SampleDevice<T>* as_sample_device();
+  virtual CommandDevice* as_command_device() { return nullptr; }
 };
 
 // A fixed-rate device: the drain writes T samples to it (Sink<T>::write on the drain thread,
 // Sink<T>::halt on a fault or abort). The drain, not the device, emits safe samples.
 template <class T>
 class SampleDevice : public Device, public Sink<T> {};
+
+template <class T>
+SampleDevice<T>* Device::as_sample_device() {
+  // The one place the sample type is asked for: the runner dispatches on the answer.
+  return dynamic_cast<SampleDevice<T>*>(this);
+}
 
 // A vector board: the job submits device commands in order, from the producer thread, while
 // the board executes them on its own clock. submit() may block for flow control; it throws
@@ -185,6 +245,7 @@ class SampleDevice : public Device, public Sink<T> {};
 class CommandDevice : public Device {
  public:
   virtual void submit(std::span<const DeviceCommand> commands) = 0;
+  CommandDevice* as_command_device() override { return this; }
 };
 
 }  // namespace mark

@@ -21,6 +21,7 @@ void CaptureLink::write(std::span<const std::uint8_t> bytes) {
   if (bytes.size() != kCommandBytes && bytes.size() != kPacketBytes)
     throw LinkError(LinkFailure::io, "lmc-capture: a transfer of " + std::to_string(bytes.size()) +
                                          " bytes (the board takes 12 or 3072)");
+  std::lock_guard lock(mutex_);
   bytes_.push_back(bytes.size() == kCommandBytes ? 'S' : 'L');
   bytes_.insert(bytes_.end(), bytes.begin(), bytes.end());
   if (bytes.size() == kCommandBytes) last_opcode_ = load(bytes.data()).opcode();
@@ -28,7 +29,13 @@ void CaptureLink::write(std::span<const std::uint8_t> bytes) {
   dirty_ = true;
 }
 
+std::size_t CaptureLink::records() const {
+  std::lock_guard lock(mutex_);
+  return records_;
+}
+
 std::array<std::uint8_t, kReplyBytes> CaptureLink::read() {
+  std::lock_guard lock(mutex_);
   Reply r;
   if (last_opcode_ == static_cast<std::uint16_t>(Op::GetPositionXY)) r.w[1] = r.w[2] = 0x8000;
   r.w[3] = status::ready;  // READY, not BUSY
@@ -36,6 +43,7 @@ std::array<std::uint8_t, kReplyBytes> CaptureLink::read() {
 }
 
 void CaptureLink::flush() {
+  std::lock_guard lock(mutex_);
   if (!dirty_) return;
   const std::string tmp = path_ + ".tmp";
   {

@@ -4,8 +4,10 @@
 // and a 12-byte single command, or the byte 'L' and a 3072-byte list packet; nothing else (no
 // header, no replies). Status replies are simulated as READY and not BUSY; GetSerialNo answers
 // 00000000, GetPositionXY the field centre. The file is written whole on flush() — to FILE.tmp,
-// then renamed — so a reader never sees half a capture.
+// then renamed — so a reader never sees half a capture. Thread-safe: a device's abort() on
+// another thread writes its stop sequence while the job's thread may be flushing.
 #include <cstdint>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -24,10 +26,11 @@ class CaptureLink : public LmcLink {
   std::string name() const override { return "capture " + path_; }
   bool simulated_replies() const override { return true; }
 
-  std::size_t records() const { return records_; }
+  std::size_t records() const;
 
  private:
   std::string path_;
+  mutable std::mutex mutex_;  // everything below
   std::vector<std::uint8_t> bytes_;
   std::size_t records_ = 0;
   std::uint16_t last_opcode_ = 0;

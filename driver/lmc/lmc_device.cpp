@@ -36,7 +36,7 @@ LmcDevice::LmcDevice(std::unique_ptr<LmcLink> link, LmcOptions options)
     : options_(std::move(options)),
       units_(options_.field_mm, options_.axes, options_.polygon_delay_unit),
       link_(std::move(link)),
-      session_(*link_, options_.session, abort_requested_),
+      session_(*link_, options_.session, lifecycle_.abort_flag()),
       encoder_(units_, [this](const ListPacket& p, const PacketInfo& i) { send_packet(p, i); }) {
   const auto bit_ok = [](int b) { return b >= 0 && b < 16; };
   if (!bit_ok(options_.laser_port_bit) || !bit_ok(options_.red_pointer_bit) ||
@@ -53,16 +53,12 @@ LmcDevice::LmcDevice(std::unique_ptr<LmcLink> link, LmcOptions options)
         "lmc: " + link_->name() + " did not complete the init sequence: " + e.what(), 0});
   }
   link_->remember_serial(identity_.serial);
+  lifecycle_.rename("lmc " + identity_.serial);
 }
 
 LmcDevice::~LmcDevice() {
   // A device going away mid-job (an exception unwinding the caller) must not leave the laser on.
-  bool running;
-  {
-    std::lock_guard lock(state_mutex_);
-    running = state_ == DeviceState::running;
-  }
-  if (running) abort();
+  if (lifecycle_.state() == DeviceState::running) abort();
 }
 
 DeviceDescription LmcDevice::describe() const {
@@ -84,16 +80,9 @@ std::uint16_t LmcDevice::port_bits(bool laser, bool red) const {
                                     (red ? 1u << options_.red_pointer_bit : 0u));
 }
 
-void LmcDevice::require_state(DeviceState want, const char* what) const {
-  std::lock_guard lock(state_mutex_);
-  if (state_ != want)
-    throw DeviceError(std::string("lmc: ") + what + " needs the device " +
-                      std::string(to_string(want)) + ", it is " + std::string(to_string(state_)));
-}
-
 void LmcDevice::begin_job(const JobHeader& header) {
   std::lock_guard job(job_);
-  require_state(DeviceState::idle, "begin_job");
+  lifecycle_.require(DeviceState::idle, "begin_job", "a job begins on an idle device (reset() it first)");
   if (!(header.field_mm > 0) || header.field_mm > options_.field_mm * (1 + 1e-9)) {
     char buf[160];
     std::snprintf(buf, sizeof buf,
@@ -120,11 +109,7 @@ void LmcDevice::begin_job(const JobHeader& header) {
   fault_latency_s_ = -1;
   device_time_s_ = 0;
   job_start_ = Clock::now();
-  {
-    std::lock_guard lock(state_mutex_);
-    state_ = DeviceState::running;
-    fault_.reset();
-  }
+  lifecycle_.begin("begin_job");
   try {
     // As meerk40t's program mode: a fresh list, the laser enable bit, the master oscillator
     // open, then ReadyMark, the open-MO delay, the port in the list, and the first pen.
@@ -184,13 +169,13 @@ void LmcDevice::check_commands(std::span<const DeviceCommand> cs) const {
 
 void LmcDevice::submit(std::span<const DeviceCommand> commands) {
   std::lock_guard job(job_);
-  {
-    std::lock_guard lock(state_mutex_);
-    if (state_ == DeviceState::aborted) return;  // the caller aborted: nothing more goes out
-    if (state_ == DeviceState::failed) throw DeviceFaultError(*fault_);
-    if (state_ != DeviceState::running)
-      throw DeviceError("lmc: submit needs a running job, the device is " +
-                        std::string(to_string(state_)));
+  switch (lifecycle_.state()) {
+    case DeviceState::running: break;
+    case DeviceState::aborted: return;  // the caller aborted: nothing more goes out
+    case DeviceState::failed:
+      if (const auto f = lifecycle_.fault()) throw DeviceFaultError(*f);
+      [[fallthrough]];
+    default: lifecycle_.refuse("submit", "commands go to a running job (begin_job)");
   }
   try {
     check_commands(commands);
@@ -206,7 +191,7 @@ void LmcDevice::submit(std::span<const DeviceCommand> commands) {
     encoder_.add(commands, commands_, pens_);
     commands_ += commands.size();
     const auto p = units_.field_point(encoder_.position()[0], encoder_.position()[1]);
-    std::lock_guard lock(state_mutex_);
+    std::lock_guard lock(report_mutex_);
     position_ = {p[0], p[1]};
   } catch (const Aborted&) {
     return;
@@ -225,11 +210,8 @@ void LmcDevice::send_packet(const ListPacket& packet, const PacketInfo& info) {
 
 DeviceReport LmcDevice::end_job() {
   std::lock_guard job(job_);
-  DeviceState s;
-  {
-    std::lock_guard lock(state_mutex_);
-    s = state_;
-  }
+  const DeviceState s = lifecycle_.state();
+  if (s == DeviceState::idle) lifecycle_.refuse("end_job", "no job was begun");
   if (s == DeviceState::running) {
     try {
       encoder_.finish(commands_);
@@ -244,8 +226,7 @@ DeviceReport LmcDevice::end_job() {
       laser_on_ = false;
       session_.command(word(Op::GetMarkTime, 3));
       link_->flush();
-      std::lock_guard lock(state_mutex_);
-      if (state_ == DeviceState::running) state_ = DeviceState::done;
+      lifecycle_.end();  // done, unless abort() came first
     } catch (const Aborted&) {
     } catch (const DeviceFaultError&) {
     } catch (const std::exception& e) {
@@ -279,7 +260,7 @@ void LmcDevice::collect_figures() {
   };
   if (first_packet_s_ >= 0) f.emplace_back("first_packet_s", first_packet_s_);
   if (fault_latency_s_ >= 0) f.emplace_back("fault_latency_s", fault_latency_s_);
-  std::lock_guard lock(state_mutex_);
+  std::lock_guard lock(report_mutex_);
   figures_ = std::move(f);
 }
 
@@ -316,12 +297,7 @@ void LmcDevice::fail(FaultCategory category, const std::string& what) {
     link_->flush();  // a capture keeps what was sent
   } catch (...) {
   }
-  {
-    std::lock_guard lock(state_mutex_);
-    state_ = DeviceState::failed;
-    fault_ = fault;
-  }
-  throw DeviceFaultError(fault);
+  throw DeviceFaultError(lifecycle_.fail(fault));
 }
 
 std::string LmcDevice::stop_board() noexcept {
@@ -338,35 +314,26 @@ std::string LmcDevice::stop_board() noexcept {
 }
 
 void LmcDevice::abort() noexcept {
-  abort_requested_.store(true, std::memory_order_release);
+  // The request first: the session's waits see it and the producer's submit() stops sending.
+  lifecycle_.abort();
   stop_board();
-  std::lock_guard lock(state_mutex_);
-  if (state_ != DeviceState::failed) state_ = DeviceState::aborted;
 }
 
 DeviceStatus LmcDevice::status() const {
-  std::lock_guard lock(state_mutex_);
-  DeviceStatus s;
-  s.state = state_;
-  s.position = position_;
-  s.laser_on = laser_on_ && state_ == DeviceState::running;
-  s.fault = fault_;
+  DeviceStatus s = lifecycle_.snapshot();
+  s.laser_on = laser_on_ && s.state == DeviceState::running;
   s.progress = commands_sent_;
+  std::lock_guard lock(report_mutex_);
+  s.position = position_;
   return s;
 }
 
 void LmcDevice::reset() {
   std::lock_guard job(job_);
-  DeviceState s;
-  std::optional<DeviceFault> f;
-  {
-    std::lock_guard lock(state_mutex_);
-    s = state_;
-    f = fault_;
-  }
-  if (s == DeviceState::running)
-    throw DeviceError("lmc: reset while a job runs: end or abort it first");
-  abort_requested_.store(false);
+  const DeviceState s = lifecycle_.state();
+  const std::optional<DeviceFault> f = lifecycle_.fault();
+  // Idle now (refused while running): the session may talk to the board again.
+  lifecycle_.reset();
   try {
     if (f && (f->category == FaultCategory::transport || f->category == FaultCategory::timeout)) {
       // The link failed: find the board again (it may have been replugged) and initialise it.
@@ -378,24 +345,22 @@ void LmcDevice::reset() {
     // right. (After a finished job the encoder knows where it left them.)
     if (s == DeviceState::aborted || s == DeviceState::failed) encoder_.set_position(session_.position());
   } catch (const std::exception& e) {
-    throw DeviceFaultError(DeviceFault{FaultCategory::transport,
-                                       "lmc: reset could not reach the board: " + std::string(e.what()),
-                                       0});
+    // Not back: the device stays out of service (failed) until a reset() reaches the board.
+    throw DeviceFaultError(lifecycle_.fail(DeviceFault{
+        FaultCategory::transport, "lmc: reset could not reach the board: " + std::string(e.what()), 0}));
   }
-  std::lock_guard lock(state_mutex_);
-  state_ = DeviceState::idle;
-  fault_.reset();
 }
 
 DeviceReport LmcDevice::report() const {
   DeviceReport r;
-  std::lock_guard lock(state_mutex_);
-  r.outcome = state_;
-  r.fault = fault_;
+  const DeviceStatus st = lifecycle_.snapshot();
+  r.outcome = st.state;
+  r.fault = st.fault;
   // Done: everything. Failed: what the fault says. Aborted: what had been sent, if the list had
   // started (ExecuteList), else nothing.
-  r.commands_done = state_ == DeviceState::done ? commands_
-                    : fault_                     ? fault_->at
+  std::lock_guard lock(report_mutex_);
+  r.commands_done = st.state == DeviceState::done ? commands_
+                    : st.fault                     ? st.fault->at
                     : session_.executing()       ? commands_sent_.load()
                                                  : 0;
   r.device_time_s = device_time_s_;
@@ -404,12 +369,12 @@ DeviceReport LmcDevice::report() const {
 }
 
 void LmcDevice::pause() {
-  require_state(DeviceState::running, "pause");
+  lifecycle_.require(DeviceState::running, "pause", "a running job pauses");
   session_.pause();
 }
 
 void LmcDevice::resume() {
-  require_state(DeviceState::running, "resume");
+  lifecycle_.require(DeviceState::running, "resume", "a running job resumes");
   session_.resume();
 }
 
@@ -423,16 +388,14 @@ std::uint16_t LmcDevice::query_status() { return session_.poll_status(); }
 
 void LmcDevice::set_red_pointer(bool on) {
   std::lock_guard job(job_);
-  {
-    std::lock_guard lock(state_mutex_);
-    if (state_ == DeviceState::running) throw DeviceError("lmc: red pointer: a job is running");
-  }
+  if (lifecycle_.state() == DeviceState::running)
+    lifecycle_.refuse("set_red_pointer", "the red pointer is switched between jobs");
   session_.command(word(Op::WritePort, port_bits(false, on)));
 }
 
 FrameReport LmcDevice::frame(const std::vector<std::vector<Vec2>>& paths, const FrameOptions& o) {
   std::lock_guard job(job_);
-  require_state(DeviceState::idle, "frame");
+  lifecycle_.require(DeviceState::idle, "frame", "a frame runs on an idle device (reset() it first)");
   std::size_t points = 0;
   for (const auto& path : paths)
     for (const Vec2& p : path) {
@@ -448,10 +411,7 @@ FrameReport LmcDevice::frame(const std::vector<std::vector<Vec2>>& paths, const 
 
   FrameReport report;
   const std::uint64_t packets_before = packets_;
-  {
-    std::lock_guard lock(state_mutex_);
-    state_ = DeviceState::running;
-  }
+  lifecycle_.begin("frame");
   try {
     // The laser enable bit stays clear and the master oscillator closed for the whole frame.
     session_.command(word(Op::ResetList));
@@ -470,8 +430,7 @@ FrameReport LmcDevice::frame(const std::vector<std::vector<Vec2>>& paths, const 
     session_.wait_idle();
     session_.command(word(Op::WritePort, port_bits(false, false)));
     link_->flush();
-    std::lock_guard lock(state_mutex_);
-    state_ = DeviceState::idle;
+    lifecycle_.leave();  // a frame marks nothing: back to idle, not done
   } catch (const Aborted&) {
     report.stopped = true;  // abort() ran the stop sequence: red pointer and laser port off
   } catch (const std::exception& e) {

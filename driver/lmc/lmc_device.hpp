@@ -14,6 +14,11 @@
 //   from which command on nothing was sent. Nothing is retried: a stroke is never marked twice.
 // - abort() from any thread and any state runs the same stop sequence; the board's laser port
 //   stays off until the next job.
+//
+// Lifecycle (driver/device.hpp, driver/lifecycle.hpp): the one state machine of every device.
+// Besides jobs, frame() runs idle → running → idle (it marks nothing); pause(), resume() need a
+// running job, set_red_pointer() none. A reset() that cannot reach the board again leaves the
+// device failed with a transport fault (a later reset() tries again).
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -24,6 +29,7 @@
 #include <vector>
 
 #include "driver/device.hpp"
+#include "driver/lifecycle.hpp"
 #include "driver/lmc/codec.hpp"
 #include "driver/lmc/cor_file.hpp"
 #include "driver/lmc/job_encoder.hpp"
@@ -88,7 +94,6 @@ class LmcDevice : public CommandDevice {
 
  private:
   struct Fault;
-  void require_state(DeviceState want, const char* what) const;
   void check_commands(std::span<const DeviceCommand> commands) const;
   void send_packet(const ListPacket& packet, const PacketInfo& info);
   [[noreturn]] void fail(FaultCategory category, const std::string& what);
@@ -101,15 +106,13 @@ class LmcDevice : public CommandDevice {
   LmcOptions options_;
   FieldUnits units_;
   std::unique_ptr<LmcLink> link_;
-  std::atomic<bool> abort_requested_{false};
+  Lifecycle lifecycle_{"lmc"};            // before session_: it watches the abort request
   Session session_;
   BoardIdentity identity_;
   JobEncoder encoder_;
 
   std::mutex job_;                        // submit / end_job / begin_job / frame / reset
-  mutable std::mutex state_mutex_;        // state_, fault_, the figures below
-  DeviceState state_ = DeviceState::idle;
-  std::optional<DeviceFault> fault_;
+  mutable std::mutex report_mutex_;       // figures_ and position_ (status() reads them)
   DeviceFigures figures_;                 // of the last job, for report()
 
   // The job.

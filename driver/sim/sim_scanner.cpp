@@ -28,7 +28,7 @@ double polyline_length(const std::vector<Vec2>& line) {
 }  // namespace
 
 SimScanner::SimScanner(SimScannerOptions options)
-    : options_(std::move(options)), dose_(options_.pixel_mm) {
+    : options_(std::move(options)), dose_(options_.pixel_mm), lifecycle_("sim " + options_.head.name) {
   const HeadModel& h = options_.head;
   if (!(options_.tick_s > 0)) throw DeviceError("simulated scanner: tick must be positive");
   if (options_.substeps < 1) throw DeviceError("simulated scanner: substeps must be at least 1");
@@ -63,16 +63,10 @@ void SimScanner::start_job() {
   samples_ = 0;
   was_lit_ = false;
   progress_.store(0, std::memory_order_relaxed);
-  state_.store(DeviceState::running, std::memory_order_release);
 }
 
 void SimScanner::begin_job(const JobHeader& header) {
-  const DeviceState s = state_.load(std::memory_order_acquire);
-  if (s != DeviceState::idle)
-    throw DeviceFaultError({FaultCategory::device,
-                            "simulated scanner (" + options_.head.name + "): begin_job while " +
-                                std::string(to_string(s)) + "; reset() it first",
-                            0});
+  lifecycle_.require(DeviceState::idle, "begin_job", "a job begins on an idle scanner (reset() it first)");
   if (header.field_mm > options_.head.field_mm * (1 + 1e-12)) {
     char msg[200];
     std::snprintf(msg, sizeof msg,
@@ -91,6 +85,7 @@ void SimScanner::begin_job(const JobHeader& header) {
                   options_.head.name.c_str(), laser.power_pct, laser.frequency_khz);
     throw DeviceFaultError({FaultCategory::device, msg, 0});
   }
+  lifecycle_.begin("begin_job");
   laser_ = laser;
   start_job();
 
@@ -113,17 +108,12 @@ void SimScanner::begin_job(const JobHeader& header) {
 }
 
 DeviceReport SimScanner::end_job() {
+  const DeviceState s = lifecycle_.end();
   trail_.flush();
+  laser_off();  // whatever the last sample said: a job ends dark
+  publish_status();
   DeviceReport r;
-  {
-    std::lock_guard<std::mutex> lock(fault_mutex_);
-    r.fault = fault_;
-  }
-  DeviceState s = state_.load(std::memory_order_acquire);
-  if (s == DeviceState::running || s == DeviceState::idle)
-    s = halted() ? DeviceState::aborted : DeviceState::done;
-  if (r.fault) s = DeviceState::failed;
-  state_.store(s, std::memory_order_release);
+  r.fault = lifecycle_.fault();
   r.outcome = s;
   r.samples_out = samples_;
   r.device_time_s = device_time_s();
@@ -140,46 +130,31 @@ DeviceReport SimScanner::end_job() {
   return r;
 }
 
+// The beam itself belongs to the drain thread: abort() raises the request (the next write
+// halts) and shows the laser off at once; the beam's power goes to 0 on that write or at
+// end_job.
 void SimScanner::abort() noexcept {
-  abort_requested_.store(true, std::memory_order_release);
+  lifecycle_.abort();
   laser_on_.store(false, std::memory_order_release);
-  DeviceState s = DeviceState::running;
-  state_.compare_exchange_strong(s, DeviceState::aborted, std::memory_order_acq_rel);
 }
 
 DeviceStatus SimScanner::status() const {
-  DeviceStatus st;
-  st.state = state_.load(std::memory_order_acquire);
+  DeviceStatus st = lifecycle_.snapshot();
   st.position = {pos_x_.load(std::memory_order_relaxed), pos_y_.load(std::memory_order_relaxed)};
-  st.laser_on = laser_on_.load(std::memory_order_relaxed);
+  st.laser_on = laser_on_.load(std::memory_order_relaxed) && st.state == DeviceState::running;
   st.progress = progress_.load(std::memory_order_relaxed);
-  std::lock_guard<std::mutex> lock(fault_mutex_);
-  st.fault = fault_;
   return st;
 }
 
 void SimScanner::reset() {
+  lifecycle_.reset();
   trail_.flush();
-  halted_.store(false, std::memory_order_release);
-  abort_requested_.store(false, std::memory_order_release);
-  laser_cmd_ = false;
-  power_ = 0;
-  was_lit_ = false;
-  {
-    std::lock_guard<std::mutex> lock(fault_mutex_);
-    fault_.reset();
-  }
-  state_.store(DeviceState::idle, std::memory_order_release);
+  laser_off();
 }
 
 void SimScanner::fail(DeviceFault fault) {
   halt();
-  {
-    std::lock_guard<std::mutex> lock(fault_mutex_);
-    fault_ = fault;
-  }
-  state_.store(DeviceState::failed, std::memory_order_release);
-  throw DeviceFaultError(std::move(fault));
+  throw DeviceFaultError(lifecycle_.fail(fault));
 }
 
 void SimScanner::check_block(std::span<const ScanSample> block) const {
@@ -200,18 +175,16 @@ void SimScanner::check_block(std::span<const ScanSample> block) const {
 }
 
 void SimScanner::write(std::span<const ScanSample> block) {
-  if (halted_.load(std::memory_order_acquire) || abort_requested_.load(std::memory_order_acquire)) {
+  const DeviceState state = lifecycle_.state();
+  if (lifecycle_.stopped() || (state != DeviceState::idle && state != DeviceState::running)) {
     halt();
-    throw DeviceError("simulated scanner (" + options_.head.name + "): halted, laser off");
+    lifecycle_.refuse("write", "the laser is halted until reset()");
   }
-  const DeviceState state = state_.load(std::memory_order_acquire);
   if (state == DeviceState::idle) {  // implicit job: full power, default frequency
+    lifecycle_.begin("write");
     laser_ = LaserSettings{};
     start_job();
   }
-  if (state != DeviceState::idle && state != DeviceState::running)
-    throw DeviceError("simulated scanner (" + options_.head.name + "): the job has ended (" +
-                      std::string(to_string(state)) + "); reset() it first");
   try {
     check_block(block);
   } catch (const DeviceFaultError& e) {
@@ -240,8 +213,12 @@ void SimScanner::publish_status() {
 }
 
 void SimScanner::halt() noexcept {
+  lifecycle_.halt();
   trail_.flush();
-  halted_.store(true, std::memory_order_release);
+  laser_off();
+}
+
+void SimScanner::laser_off() noexcept {
   laser_cmd_ = false;
   power_ = 0;
   lit_ref_ = 0;

@@ -9,11 +9,12 @@
 // constant-speed ramp lags by exactly τ·v) and the laser is as sample k says. Device time =
 // samples × tick. The beam starts at rest at the field centre with the laser off.
 //
-// A sample-level Device (driver/device.hpp). begin_job() clears the previous job's dose and lit
-// paths and sizes everything the job needs — dose tiles along the header's lit paths, the lit
-// path and trace buffers — so write(), on the drain thread, does not allocate. Samples written
-// outside begin_job/end_job start an implicit job with nothing sized (tests that use the
-// scanner as a bare sink, the emulated board).
+// A sample-level Device (driver/device.hpp) with the one lifecycle (driver/lifecycle.hpp).
+// begin_job() clears the previous job's dose and lit paths and sizes everything the job needs —
+// dose tiles along the header's lit paths, the lit path and trace buffers — so write(), on the
+// drain thread, does not allocate. Samples written to an idle scanner start an implicit job with
+// nothing sized (the scanner as a bare sink: verification runs, the emulated board's plant).
+// end_job() leaves the laser off whatever the last sample said.
 //
 // Laser: the dose is time × the sample's power × the pen's power (JobHeader::pens[0].laser
 // .power_pct; 100 % for an implicit job), so half the power leaves half the dose; the lit test
@@ -23,17 +24,17 @@
 //
 // Laser safety: a block holding any sample outside the field (or not finite) is refused as a
 // whole: the scanner halts (laser off) and throws DeviceFaultError (out_of_field) naming the
-// sample and coordinate. After halt() or abort() every further write throws; the laser stays
-// off until reset().
+// sample and coordinate. After halt() or abort() every further write throws DeviceStateError;
+// the laser stays off until reset().
 #include <atomic>
 #include <cstdint>
 #include <functional>
-#include <mutex>
 #include <optional>
 #include <span>
 #include <vector>
 
 #include "driver/device.hpp"
+#include "driver/lifecycle.hpp"
 #include "driver/sim/dose_raster.hpp"
 #include "driver/sim/dose_trail.hpp"
 #include "driver/sim/head_model.hpp"
@@ -80,7 +81,8 @@ class SimScanner : public SampleDevice<ScanSample> {
 
   std::uint64_t samples() const { return samples_; }  // in this job
   double device_time_s() const { return static_cast<double>(samples_) * options_.tick_s; }
-  bool halted() const { return halted_.load(std::memory_order_acquire); }
+  // The laser is held off for the rest of the job: halt(), abort() or a fault.
+  bool halted() const { return lifecycle_.stopped(); }
   bool laser_commanded() const { return laser_cmd_; }  // laser gate as last commanded
   double laser_power() const { return power_; }        // effective power now, 0..1
   Vec2 beam() const { return {axis_[0].x, axis_[1].x}; }
@@ -102,6 +104,7 @@ class SimScanner : public SampleDevice<ScanSample> {
     double v = 0;  // velocity, mm/s
   };
   void start_job();
+  void laser_off() noexcept;
   void check_block(std::span<const ScanSample> block) const;
   void follow(const ScanSample& s);
   void step_axis(Axis& a, double cmd, double dt) const;
@@ -131,14 +134,10 @@ class SimScanner : public SampleDevice<ScanSample> {
   PulseTrain pulses_;
 
   // State shared with other threads (abort, status).
-  std::atomic<DeviceState> state_{DeviceState::idle};
-  std::atomic<bool> halted_{false};
-  std::atomic<bool> abort_requested_{false};
+  Lifecycle lifecycle_;
   std::atomic<std::uint64_t> progress_{0};
   std::atomic<float> pos_x_{0}, pos_y_{0};
   std::atomic<bool> laser_on_{false};
-  mutable std::mutex fault_mutex_;  // guards fault_ (never taken on the sample path)
-  std::optional<DeviceFault> fault_;
 };
 
 }  // namespace mark

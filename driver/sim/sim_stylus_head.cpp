@@ -9,7 +9,9 @@
 namespace mark {
 
 SimStylusHead::SimStylusHead(SimStylusHeadOptions options)
-    : options_(std::move(options)), noise_rng_(options_.noise_seed) {
+    : options_(std::move(options)),
+      noise_rng_(options_.noise_seed),
+      lifecycle_("sim stylus head (" + mark::describe(options_.head) + ")") {
   validate(options_.head);
   if (options_.cells) validate(*options_.cells);
   if (!(options_.max_drive_um > 0)) throw std::invalid_argument("stylus head: amplifier range must be positive");
@@ -19,7 +21,7 @@ SimStylusHead::SimStylusHead(SimStylusHeadOptions options)
 
 DeviceDescription SimStylusHead::describe() const {
   DeviceDescription d;
-  d.name = "sim stylus head (" + mark::describe(options_.head) + ")";
+  d.name = lifecycle_.device();
   d.level = DeviceLevel::samples;
   d.field_mm = 0;  // a stylus has no scan field: it moves in depth only
   d.tick_s = kStylusTick_s;
@@ -27,9 +29,7 @@ DeviceDescription SimStylusHead::describe() const {
 }
 
 void SimStylusHead::begin_job(const JobHeader& header) {
-  if (state_.load() != DeviceState::idle)
-    throw std::logic_error("stylus head: begin_job while " + std::string(to_string(state_.load())) +
-                           " (reset() first)");
+  lifecycle_.require(DeviceState::idle, "begin_job", "a job begins on an idle head (reset() it first)");
   const bool recording = options_.record_profile || options_.record_sense || options_.cells;
   if (recording && header.expected_samples == 0)
     throw std::invalid_argument("stylus head: job '" + header.name +
@@ -56,37 +56,26 @@ void SimStylusHead::begin_job(const JobHeader& header) {
   noise_.reset();
   for (Mode& m : modes_) m.x = m.v = 0;
   samples_ = 0;
-  halted_ = false;
-  abort_requested_ = false;
-  lifted_ = false;
   cutting_ = false;
   drive_peak_ = max_cut_ = 0;
   cut_samples_ = 0;
-  {
-    std::lock_guard lock(fault_mutex_);
-    fault_.reset();
-  }
-  state_ = DeviceState::running;
+  lifecycle_.begin("begin_job");
+  lifted_ = false;
+  // An abort() between the two lines above found the head running and lifted it; keep it so.
+  if (lifecycle_.abort_requested()) lifted_ = true;
 }
 
 DeviceReport SimStylusHead::end_job() {
+  // A job the drain halted (a stop, an underrun) ends aborted unless a fault of the head's own
+  // already failed it.
+  const DeviceState s = lifecycle_.end();
   // The head retracts at the end of every job, whatever the last sample asked.
   lifted_ = true;
   cutting_ = false;
   if (meter_) meter_->finish();
-  // A job the drain halted (a stop, an underrun) ends aborted unless a fault of the head's own
-  // already failed it.
-  DeviceState s = state_.load();
-  if (s == DeviceState::running) {
-    s = halted_ ? DeviceState::aborted : DeviceState::done;
-    state_ = s;
-  }
   DeviceReport r;
   r.outcome = s;
-  {
-    std::lock_guard lock(fault_mutex_);
-    r.fault = fault_;
-  }
+  r.fault = lifecycle_.fault();
   r.samples_out = samples();
   r.device_time_s = device_time_s();
   r.figures = {{"samples", static_cast<double>(samples())},
@@ -98,33 +87,23 @@ DeviceReport SimStylusHead::end_job() {
 }
 
 void SimStylusHead::abort() noexcept {
-  abort_requested_ = true;
+  lifecycle_.abort();
   lifted_ = true;
   cutting_ = false;
-  DeviceState s = state_.load();
-  if (s == DeviceState::running || s == DeviceState::idle) state_.compare_exchange_strong(s, DeviceState::aborted);
 }
 
 DeviceStatus SimStylusHead::status() const {
-  DeviceStatus st;
-  st.state = state_.load();
+  DeviceStatus st = lifecycle_.snapshot();
   st.laser_on = cutting_.load();  // for a stylus: the diamond is in the copper
   st.progress = samples();
-  std::lock_guard lock(fault_mutex_);
-  st.fault = fault_;
   return st;
 }
 
-void SimStylusHead::reset() {
-  const DeviceState s = state_.load();
-  if (s == DeviceState::running) throw std::logic_error("stylus head: reset while a job is running (abort first)");
-  std::lock_guard lock(fault_mutex_);
-  fault_.reset();
-  state_ = DeviceState::idle;
-}
+void SimStylusHead::reset() { lifecycle_.reset(); }
 
 void SimStylusHead::set_recording(bool profile, bool sense) {
-  if (state_.load() == DeviceState::running) throw std::logic_error("stylus head: set_recording while a job runs");
+  if (lifecycle_.state() == DeviceState::running)
+    lifecycle_.refuse("set_recording", "what a job records is set between jobs");
   options_.record_profile = profile;
   options_.record_sense = sense;
 }
@@ -136,13 +115,7 @@ const std::vector<CellFigures>& SimStylusHead::cells() const {
 
 void SimStylusHead::fail(FaultCategory category, const std::string& message, std::uint64_t at) {
   halt();
-  DeviceFault f{category, message, at};
-  {
-    std::lock_guard lock(fault_mutex_);
-    fault_ = f;
-  }
-  state_ = DeviceState::failed;
-  throw DeviceFaultError(std::move(f));
+  throw DeviceFaultError(lifecycle_.fail(DeviceFault{category, message, at}));
 }
 
 void SimStylusHead::check_block(std::span<const StylusSample> block) {
@@ -168,9 +141,12 @@ void SimStylusHead::settle_at(double drive_um) {
 }
 
 void SimStylusHead::write(std::span<const StylusSample> block) {
-  if (abort_requested_.load(std::memory_order_relaxed)) halt();
-  if (halted_) throw DeviceError("sim stylus head: halted, head retracted");
-  if (state_.load() != DeviceState::running) throw DeviceError("sim stylus head: write outside a job");
+  if (lifecycle_.stopped() || lifecycle_.state() != DeviceState::running) {
+    halt();
+    lifecycle_.refuse("write", lifecycle_.state() == DeviceState::idle
+                                   ? "samples go to a running job (begin_job)"
+                                   : "the head is retracted until reset()");
+  }
   check_block(block);
   if (block.empty()) return;
   if (samples() == 0) settle_at(block.front().drive_um);
@@ -212,7 +188,7 @@ void SimStylusHead::write(std::span<const StylusSample> block) {
 }
 
 void SimStylusHead::halt() noexcept {
-  halted_ = true;
+  lifecycle_.halt();
   lifted_ = true;
   cutting_ = false;
 }

@@ -16,18 +16,21 @@
 // the head: the block is not executed, the head retracts, and write() throws a DeviceFaultError
 // (category out_of_field) naming the sample and the value.
 //
+// Lifecycle: the one of driver/device.hpp (driver/lifecycle.hpp); misuse — begin_job while a
+// job runs, a write outside a running job, set_recording during one — throws DeviceStateError.
+//
 // Threads: write()/halt() on the drain thread; abort() and status() from any thread; the
 // recordings are read after end_job(). begin_job() reserves every buffer, so writing never
 // allocates.
 #include <atomic>
 #include <cstdint>
-#include <mutex>
 #include <optional>
 #include <random>
 #include <span>
 #include <vector>
 
 #include "driver/device.hpp"
+#include "driver/lifecycle.hpp"
 #include "driver/sim/stylus_cells.hpp"
 #include "driver/sim/stylus_head_model.hpp"
 #include "ringbuffer/stylus_sample.hpp"
@@ -53,8 +56,7 @@ class SimStylusHead : public SampleDevice<StylusSample> {
   // Device
   DeviceDescription describe() const override;
   // Needs header.expected_samples when recording or measuring cells (buffers are sized from it);
-  // throws std::invalid_argument if it exceeds max_record_samples, std::logic_error if a job is
-  // running.
+  // throws std::invalid_argument if it exceeds max_record_samples (the head stays idle).
   void begin_job(const JobHeader& header) override;
   DeviceReport end_job() override;
   void abort() noexcept override;
@@ -65,8 +67,8 @@ class SimStylusHead : public SampleDevice<StylusSample> {
   void write(std::span<const StylusSample> block) override;
   void halt() noexcept override;
 
-  // What the next jobs record (between jobs only; throws std::logic_error while one runs): the
-  // head response test needs the sensing coil, an engraving job the cut profile.
+  // What the next jobs record (between jobs only; DeviceStateError while one runs): the head
+  // response test needs the sensing coil, an engraving job the cut profile.
   void set_recording(bool profile, bool sense);
 
   // Results of the last job.
@@ -89,7 +91,7 @@ class SimStylusHead : public SampleDevice<StylusSample> {
   };
   void check_block(std::span<const StylusSample> block);
   void settle_at(double drive_um);
-  void fail(FaultCategory category, const std::string& message, std::uint64_t at);
+  [[noreturn]] void fail(FaultCategory category, const std::string& message, std::uint64_t at);
 
   SimStylusHeadOptions options_;
   std::vector<Mode> modes_;
@@ -97,14 +99,10 @@ class SimStylusHead : public SampleDevice<StylusSample> {
   std::vector<float> profile_, sense_position_, sense_velocity_;
   std::mt19937 noise_rng_;
   std::normal_distribution<float> noise_{0.0f, 1.0f};
-  std::atomic<DeviceState> state_{DeviceState::idle};
-  std::atomic<bool> abort_requested_{false};
+  Lifecycle lifecycle_;
   std::atomic<bool> lifted_{true};
   std::atomic<bool> cutting_{false};
   std::atomic<std::uint64_t> samples_{0};
-  mutable std::mutex fault_mutex_;  // fault_ is set on the drain thread, read by status()
-  std::optional<DeviceFault> fault_;
-  bool halted_ = false;
   double drive_peak_ = 0;
   double max_cut_ = 0;
   std::uint64_t cut_samples_ = 0;

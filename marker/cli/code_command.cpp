@@ -19,6 +19,7 @@
 #include "marker/codes/code_data.hpp"
 #include "marker/codes/code_json.hpp"
 #include "marker/job/job.hpp"
+#include "marker/job/sim_evaluator.hpp"
 #include "marker/limits/head_settings.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/preview/mark_preview.hpp"

@@ -2,6 +2,9 @@
 // `--device` on the command line: which device a job runs on. "sim" (the default) is the
 // simulated scanner for the job's head and tick; "lmc", "lmc:SERIAL" and "lmc-capture:FILE" a
 // BJJCZ LMC board over USB (or its bytes captured to a file), its lens field the job's field.
+// With the device comes what can tell how the mark came out: the simulated scanner's evaluator
+// (marker/job/sim_evaluator.hpp) — of the device itself, or of the plant behind an emulated
+// board — or none for a real board.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -9,6 +12,7 @@
 #include "driver/device.hpp"
 #include "marker/cli/lmc_options.hpp"
 #include "marker/job/job.hpp"
+#include "marker/job/sim_evaluator.hpp"
 
 namespace mark::cli {
 
@@ -19,9 +23,16 @@ struct SimSettings {
   double laser_rise_s = 0;              // --laser-rise-us
 };
 
+struct OpenedDevice {
+  std::unique_ptr<Device> device;
+  // The simulated scanner's evaluator (pass it as JobOptions::evaluator); null for a real board.
+  // Its scanner() holds the dose and trace for --preview, --dose-png and --trace.
+  std::unique_ptr<SimEvaluator> simulator;
+};
+
 // The device named by `spec` for this job. Throws InputError naming the option and the kinds
 // known.
-std::unique_ptr<Device> open_device(const std::string& spec, const JobSpec& job,
-                                    const SimSettings& sim, const LmcArgs& lmc = {});
+OpenedDevice open_device(const std::string& spec, const JobSpec& job, const SimSettings& sim,
+                         const LmcArgs& lmc = {});
 
 }  // namespace mark::cli

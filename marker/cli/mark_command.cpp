@@ -288,8 +288,9 @@ int run_mark(const MarkArgs& a) {
   sim_settings.fault_at = inject.device_fault_at;
   sim_settings.trace = !a.trace.empty();
   sim_settings.laser_rise_s = a.head.laser_rise_us * 1e-6;
-  const std::unique_ptr<Device> device = open_device(a.device, spec, sim_settings, a.lmc);
-  auto* scanner = dynamic_cast<SimScanner*>(device.get());
+  const OpenedDevice opened = open_device(a.device, spec, sim_settings, a.lmc);
+  const std::unique_ptr<Device>& device = opened.device;
+  const SimScanner* scanner = opened.simulator ? &opened.simulator->scanner() : nullptr;
   if (!scanner && (!a.preview.empty() || !a.dose_png.empty() || !a.trace.empty()))
     throw InputError("--preview, --dose-png and --trace need the simulated scanner (--device sim)");
 
@@ -308,8 +309,8 @@ int run_mark(const MarkArgs& a) {
     plan_s = seconds_since(t);
   }
   options.compiled_s = prepared.layout_s + plan_s;
-  const JobResult r = scanner ? run_job_simulated(spec, std::move(*job), options, *scanner)
-                              : run_compiled_job(spec, std::move(*job), options, *device);
+  options.evaluator = opened.simulator.get();
+  const JobResult r = run_compiled_job(spec, std::move(*job), options, *device);
   // A job stopped by Ctrl-C leaves no files: what it would show is not the part on the machine's
   // table. A failed job's files show how far it got.
   std::optional<CameraImage> picture;

@@ -80,8 +80,9 @@ int run_mark_job(const MarkJobArgs& a) {
 
   SimSettings sim;
   sim.fault_at = inject.device_fault_at;
-  const std::unique_ptr<Device> device = open_device(
+  const OpenedDevice opened = open_device(
       a.device.empty() ? job.device : a.device, object_spec(job, job.objects.front(), "", fonts), sim);
+  Device& device = *opened.device;
 
   const std::string where = store_location(a.store, a.job);
   auto store = open_store(where, a.remark ? StoreAccess::existing : StoreAccess::create);
@@ -96,9 +97,10 @@ int run_mark_job(const MarkJobArgs& a) {
                  "recorded aborted; their numbers are void\n",
                  context.station.c_str(), closed.size(), ids.c_str());
   }
-  PartRunner runner(job, fonts, variables, *device, *store, context);
+  PartRunner runner(job, fonts, variables, device, *store, context);
 
   PartOptions options;
+  options.job.evaluator = opened.simulator.get();
   options.job.virtual_time = a.virtual_time;
   options.job.stop = &interrupt_flag();
   options.job.inject = inject.drain;

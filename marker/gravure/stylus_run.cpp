@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <exception>
 
+#include "driver/sample_stream.hpp"
 #include "driver/sim/stylus_head_model.hpp"
-#include "ringbuffer/line_memory.hpp"
 
 namespace mark {
 
@@ -30,64 +29,35 @@ std::size_t StylusSampleStream::next(std::span<StylusSample> out) {
 StylusRunResult run_stylus_job(DriveSource& source, const FilterBank* bank, SampleDevice<StylusSample>& device,
                                const StylusRunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
-  StylusRunResult result;
   JobHeader header;
   header.name = options.job_name;
   header.field_mm = 0;
   header.pens.push_back({});
   header.expected_samples = source.total_samples();
-  device.begin_job(header);
 
   StylusSampleStream stream(source, bank);  // before the drain starts: its filters are built here
-  LineMemory<StylusSample> memory(std::max<std::size_t>(options.memory_samples, 1));
-  DrainOptions d;
-  d.rate_hz = kStylusRate_hz;
-  d.block_samples = std::max<std::size_t>(options.block_samples, 1);
-  d.virtual_time = options.virtual_time;
-  d.start_fill = std::min(options.memory_samples, 2 * d.block_samples);
-  d.realtime_priority = 0;
-  d.stop = options.stop;
-  d.stop_at = options.stop_at;
-  d.starve_at = options.starve_at;
-  Drain<StylusSample> drain(memory, device, d);
-  drain.start();
-  std::exception_ptr failure;
-  try {
-    std::vector<StylusSample> chunk(4096);
-    while (const std::size_t n = stream.next(chunk)) {
-      result.samples += n;
-      if (!memory.push(std::span<const StylusSample>(chunk.data(), n))) break;  // the drain stopped
-    }
-    memory.close();
-  } catch (...) {
-    // The producer failed: stop the drain (the stylus gets its safe sample) before reporting.
-    failure = std::current_exception();
-    drain.abort();
-  }
-  result.drain = drain.wait();
-  result.report = device.end_job();
-  result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (failure) std::rethrow_exception(failure);
+  StreamOptions<StylusSample> o;
+  o.memory_samples = std::max<std::size_t>(options.memory_samples, 1);
+  o.drain.rate_hz = kStylusRate_hz;
+  o.drain.block_samples = std::max<std::size_t>(options.block_samples, 1);
+  o.drain.virtual_time = options.virtual_time;
+  o.drain.start_fill = std::min(o.memory_samples, 2 * o.drain.block_samples);
+  o.drain.realtime_priority = 0;
+  o.drain.stop = options.stop;
+  o.drain.stop_at = options.stop_at;
+  o.drain.starve_at = options.starve_at;
+  o.safe_state = "stylus lifted";
+  const StreamResult s = stream_samples(
+      device, header, [&](std::span<StylusSample> out) { return stream.next(out); }, o);
 
-  const DrainStats& st = result.drain;
-  switch (st.end) {
-    case DrainEnd::completed:
-      result.fault = result.report.fault;
-      break;
-    case DrainEnd::cancelled:
-      result.cancelled = true;
-      break;
-    case DrainEnd::underrun:
-      result.fault = DeviceFault{FaultCategory::underrun,
-                                 "line memory underrun at sample " + std::to_string(st.stop_sample) +
-                                     ": the toolpath fell behind the stylus clock; stylus lifted for the rest of the job",
-                                 st.stop_sample};
-      break;
-    case DrainEnd::device_fault:
-      result.fault = fault_from(drain.error(), st.stop_sample);
-      break;
-  }
-  if (st.end != DrainEnd::completed) result.stopped_at = result.fault ? result.fault->at : st.stop_sample;
+  StylusRunResult result;
+  result.report = s.device;
+  result.drain = s.drain;
+  result.samples = s.produced;
+  result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  result.cancelled = s.ending.outcome == DeviceState::aborted;
+  result.fault = s.ending.fault;
+  result.stopped_at = s.ending.stopped_at;
   return result;
 }
 

@@ -6,10 +6,11 @@
 // default for the simulated head) the drain runs as fast as the device takes samples; device
 // time is what is reported either way.
 //
-// Every ending is the drain's (ringbuffer/drain.hpp): the end of the job, a stop request
-// (Ctrl-C through a StopFlag, or the injected stop_at), an underrun in real time, a device
-// fault — and every one leaves the stylus on its safe sample, lifted clear of the cylinder. The
-// result says which, and where the job stopped.
+// The streaming and its endings are the one core every sample-level job shares
+// (driver/sample_stream.hpp): the end of the job, a stop request (Ctrl-C through a StopFlag, or
+// the injected stop_at; an abort() of the head from another thread), an underrun in real time,
+// a device fault — and every one leaves the stylus on its safe sample, lifted clear of the
+// cylinder. The result says which, and where the job stopped.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -55,7 +56,7 @@ struct StylusRunResult {
   DrainStats drain;               // how the drain ended (completed, cancelled, underrun, fault)
   std::uint64_t samples = 0;      // samples the producer generated
   double wall_time_s = 0;
-  bool cancelled = false;         // a stop request ended the job
+  bool cancelled = false;         // a stop request (or an abort of the head) ended the job
   std::optional<DeviceFault> fault;  // an underrun or a device fault ended it
   std::uint64_t stopped_at = 0;   // first sample not engraved as planned (when not completed)
 };

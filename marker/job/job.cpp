@@ -11,10 +11,18 @@
 #include "marker/job/job_checks.hpp"
 #include "marker/job/job_compiler.hpp"
 #include "marker/job/job_run.hpp"
-#include "marker/job/simulate_plan.hpp"
+#include "marker/job/mark_evaluator.hpp"
 #include "marker/locus/locus_generator.hpp"
 
 namespace mark {
+
+JobOutcome job_outcome(DeviceState ending) {
+  switch (ending) {
+    case DeviceState::done: return JobOutcome::done;
+    case DeviceState::failed: return JobOutcome::failed;
+    default: return JobOutcome::aborted;
+  }
+}
 
 std::string_view to_string(JobOutcome outcome) {
   switch (outcome) {
@@ -113,17 +121,22 @@ JobResult run_on_device(const JobSpec& spec, CompiledJob job, double compiled_s,
   const DeviceState state = device.status().state;
   if (state != DeviceState::idle && state != DeviceState::running) device.reset();
 
+  SampleDevice<ScanSample>* samples = nullptr;
+  CommandDevice* commands = nullptr;
   if (desc.level == DeviceLevel::samples) {
-    auto* samples = dynamic_cast<SampleDevice<ScanSample>*>(&device);
+    samples = device.as_sample_device<ScanSample>();
     if (!samples)
       throw DeviceFaultError({FaultCategory::device,
                               desc.name + " takes samples of another kind than scanner samples", 0});
-    device.begin_job(job_header(spec, result.job, desc));
-    run_samples(spec, options, *samples, compiled_s, result);
   } else {
-    auto* commands = dynamic_cast<CommandDevice*>(&device);
+    commands = device.as_command_device();
     if (!commands)
       throw DeviceFaultError({FaultCategory::device, desc.name + " takes no device commands", 0});
+  }
+  if (options.evaluator) options.evaluator->begin(spec, result.job);
+  if (samples) {
+    run_samples(spec, options, *samples, job_header(spec, result.job, desc), compiled_s, result);
+  } else {
     run_commands(spec, options, *commands, result);
     result.compile_time_s = compiled_s;
   }
@@ -132,7 +145,7 @@ JobResult run_on_device(const JobSpec& spec, CompiledJob job, double compiled_s,
   result.strokes = result.job.plan.strokes;
   result.jump_length_mm = result.job.plan.jump_length_mm;
   if (result.outcome == JobOutcome::done) result.ink_marked = 1;
-  if (const auto* sim = dynamic_cast<const SimScanner*>(&device)) result.pulses = sim->pulses();
+  if (options.evaluator) options.evaluator->evaluate(spec, result);
   return result;
 }
 
@@ -162,43 +175,6 @@ JobHeader job_header(const JobSpec& spec, const CompiledJob& job, const DeviceDe
     h.lit_paths = intended_polylines(job.figure, 0.05);
   }
   return h;
-}
-
-std::vector<CodeVerification> verify_codes(const JobSpec& spec, const CompiledJob& job, const DoseRaster& dose) {
-  std::vector<CodeVerification> out;
-  for (std::size_t k = 0; k < job.codes.size(); ++k)
-    out.push_back(verify_code(job.codes[k], spec.codes[k].spec, dose, spec.verify));
-  return out;
-}
-
-SimScannerOptions simulator_options(const JobSpec& spec) { return simulator_options(spec.head, spec.pen); }
-
-namespace {
-
-JobResult evaluated(JobResult result, const JobSpec& spec, const SimScanner& scanner,
-                    const QualityReference* reference) {
-  result.quality = simulated_quality(result, scanner, reference);
-  result.codes = verify_codes(spec, result.job, scanner.dose());
-  return result;
-}
-
-}  // namespace
-
-JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,
-                            const QualityReference* reference) {
-  return evaluated(run_job(spec, options, scanner), spec, scanner, reference);
-}
-
-JobResult run_job_simulated(const JobSpec& spec, CompiledJob job, const JobOptions& options,
-                            SimScanner& scanner, const QualityReference* reference) {
-  return evaluated(run_compiled_job(spec, std::move(job), options, scanner), spec, scanner, reference);
-}
-
-Quality simulated_quality(const JobResult& result, const SimScanner& scanner,
-                          const QualityReference* reference) {
-  return reference ? reference->evaluate(scanner.lit_paths(), scanner.dose())
-                   : evaluate_quality(intended_polylines(result.job.figure), scanner.lit_paths(),
-                                      scanner.dose());
 }
 
 }  // namespace mark

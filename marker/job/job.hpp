@@ -9,7 +9,10 @@
 // limits, a coordinate outside the device's field) happens before the device is touched. The
 // result says how the job ended — done, aborted (a stop request: Ctrl-C, an operator) or failed
 // (a fault: underrun, device, transport…) — and for the last two where it stopped and how much
-// of the ink had been marked, so the caller can say what was and was not marked.
+// of the ink had been marked, so the caller can say what was and was not marked. What was
+// marked — quality, pulses, codes read back — comes from the evaluator the caller passes in
+// (JobOptions::evaluator, marker/job/mark_evaluator.hpp); the runner does not ask what the device
+// is beyond the level it takes.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -20,8 +23,8 @@
 
 #include "driver/device.hpp"
 #include "driver/sim/head_model.hpp"
+#include "driver/sim/pulse_train.hpp"
 #include "driver/sim/quality.hpp"
-#include "driver/sim/sim_scanner.hpp"
 #include "fonts/stroke_font.hpp"
 #include "marker/codes/code_object.hpp"
 #include "marker/codes/verify.hpp"
@@ -32,6 +35,8 @@
 #include "ringbuffer/stop_flag.hpp"
 
 namespace mark {
+
+class MarkEvaluator;
 
 struct JobSpec {
   std::string text;  // UTF-8; '\n' starts a new line (may be empty when the job has codes)
@@ -114,6 +119,9 @@ struct JobOptions {
   double compiled_s = 0;
   // Called on the producer thread about every 100 ms with samples out / samples in the job.
   std::function<void(std::uint64_t done, std::uint64_t total)> progress;
+  // Tells what was marked (quality, pulses, codes) when the caller has something that can: the
+  // simulated scanner it made (marker/job/sim_evaluator.hpp). Not owned; may be null.
+  MarkEvaluator* evaluator = nullptr;
 };
 
 enum class JobOutcome { done, aborted, failed };
@@ -141,14 +149,15 @@ struct JobResult {
   double stop_latency_us = -1;
   std::uint64_t stop_latency_samples = 0;
   DeviceReport device;
-  std::optional<Quality> quality;  // when the device is the simulated scanner (run_job_simulated)
-  std::optional<PulseFigures> pulses;  // when the device is the simulated scanner
-  std::vector<CodeVerification> codes;  // simulated scanner: each code read back off the mark
+  std::optional<Quality> quality;  // from the evaluator (the simulated scanner), when given
+  std::optional<PulseFigures> pulses;  // from the evaluator
+  std::vector<CodeVerification> codes;  // from the evaluator: each code read back off the mark
   CompiledJob job;                 // what was marked: figure and plan
 };
 
 // Runs the job on any device: compile, begin_job, stream (samples through the drain, or device
-// commands), end_job. A device left in a final state by an earlier job is reset first. Throws
+// commands), end_job, then the evaluator (options.evaluator) on what was marked. A device left
+// in a final state by an earlier job is reset first. Throws
 // InputError for a refused job (the device untouched) and DeviceFaultError when the device
 // cannot start; a fault during the job is in the result (outcome failed), not thrown.
 JobResult run_job(const JobSpec& spec, const JobOptions& options, Device& device);
@@ -156,22 +165,4 @@ JobResult run_job(const JobSpec& spec, const JobOptions& options, Device& device
 // level; InputError otherwise): the device's own refusals (its field) are made here.
 JobResult run_compiled_job(const JobSpec& spec, CompiledJob job, const JobOptions& options,
                            Device& device);
-// The simulated scanner for a spec: its head, its pen's tick, lit paths recorded.
-SimScannerOptions simulator_options(const JobSpec& spec);
-// Each of the job's codes read back off the dose of its mark (in the spec's order).
-std::vector<CodeVerification> verify_codes(const JobSpec& spec, const CompiledJob& job, const DoseRaster& dose);
-// Runs the job on that scanner and evaluates the quality figures against the figure's intended
-// strokes (against `reference` when given — it must be built from this spec's figure; a speed
-// search reuses one), and reads every code back off the simulated part. The scanner keeps the
-// dose for a preview.
-JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,
-                            const QualityReference* reference = nullptr);
-// The same for a job compiled beforehand for a sample-level device.
-JobResult run_job_simulated(const JobSpec& spec, CompiledJob job, const JobOptions& options,
-                            SimScanner& scanner, const QualityReference* reference = nullptr);
-// The quality figures of the job `result` just ran on `scanner` (how run_job_simulated gets
-// them), against its figure's intended strokes or `reference`.
-Quality simulated_quality(const JobResult& result, const SimScanner& scanner,
-                          const QualityReference* reference = nullptr);
-
 }  // namespace mark

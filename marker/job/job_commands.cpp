@@ -85,12 +85,7 @@ void run_commands(const JobSpec& spec, const JobOptions& options, CommandDevice&
   result.commands = program.commands.size();
   result.mark_time_s = result.device.device_time_s;
   if (!result.device.fault && fault) result.device.fault = fault;
-  switch (result.device.outcome) {
-    case DeviceState::done: result.outcome = JobOutcome::done; break;
-    case DeviceState::failed: result.outcome = JobOutcome::failed; break;
-    default: result.outcome = JobOutcome::aborted; break;
-  }
-  if (result.device.fault) result.outcome = JobOutcome::failed;
+  result.outcome = result.device.fault ? JobOutcome::failed : job_outcome(result.device.outcome);
   result.fault = result.device.fault;
   if (result.outcome != JobOutcome::done) {
     result.stopped_at = result.device.commands_done;

@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "marker/job/job.hpp"
+#include "ringbuffer/scan_sample.hpp"
 
 namespace mark {
 
@@ -15,10 +16,14 @@ double seconds_since(JobClock::time_point t0);
 // What begin_job tells the device: the field, the pen, the expected samples and the lit paths.
 JobHeader job_header(const JobSpec& spec, const CompiledJob& job, const DeviceDescription& device);
 
-// Sample level; begin_job has been called. `compiled_s`: the compile's wall time, the first
-// part of compile_time_s (the second is the locus's first block, device setup left out).
+// The job's outcome for how a device's job ended (done, failed; anything else aborted).
+JobOutcome job_outcome(DeviceState ending);
+
+// Sample level: begin_job with `header`, the stream, end_job (driver/sample_stream.hpp).
+// `compiled_s`: the compile's wall time, the first part of compile_time_s (the second is the
+// locus's first block, device setup left out).
 void run_samples(const JobSpec& spec, const JobOptions& options, SampleDevice<ScanSample>& device,
-                 double compiled_s, JobResult& result);
+                 const JobHeader& header, double compiled_s, JobResult& result);
 
 // Command level; converts the plan, calls begin_job, submits, end_job.
 void run_commands(const JobSpec& spec, const JobOptions& options, CommandDevice& device,

@@ -1,17 +1,13 @@
-// A job on a sample-level device: the locus generator writes the line memory on this thread
-// while the drain thread reads it out through the laser delay line to the device.
+// A job on a sample-level device: the locus generator is the producer of the one streaming
+// core (driver/sample_stream.hpp), the laser delay line its filter on the drain thread.
 #include <algorithm>
 #include <cmath>
-#include <string>
-#include <thread>
 #include <vector>
 
+#include "driver/sample_stream.hpp"
 #include "marker/job/job_run.hpp"
 #include "marker/locus/locus_generator.hpp"
-#include "ringbuffer/drain.hpp"
 #include "ringbuffer/laser_delay_line.hpp"
-#include "ringbuffer/line_memory.hpp"
-#include "ringbuffer/realtime.hpp"
 
 namespace mark {
 namespace {
@@ -50,78 +46,37 @@ double locus_ink_fraction(const Plan& plan, std::uint64_t samples) {
 }
 
 void run_samples(const JobSpec& spec, const JobOptions& options, SampleDevice<ScanSample>& device,
-                 double compiled_s, JobResult& result) {
-  const DeviceDescription desc = device.describe();
+                 const JobHeader& header, double compiled_s, JobResult& result) {
   const Plan& plan = result.job.plan;
-  const double tick = spec.pen.tick_s;
-  LineMemory<ScanSample> memory(options.memory_samples);
   LaserDelayLine delay(result.job.laser_on_ticks, result.job.laser_off_ticks);
-  Drain<ScanSample> drain(memory, device, drain_options(spec, options, desc), &delay);
-  std::vector<ScanSample> buffer(std::max(options.block, options.first_block));
   LocusGenerator locus(plan);
-  const std::uint64_t total = options.progress ? LocusGenerator::count_samples(plan) : 0;
-  // Everything the job touches is allocated now; lock it in RAM so no page fault stalls the
-  // drain (real time only: virtual time has no deadlines to miss).
-  if (!options.virtual_time && options.realtime) result.memory_locked = lock_memory();
-  drain.start();
+  StreamOptions<ScanSample> o;
+  o.drain = drain_options(spec, options, device.describe());
+  o.filter = &delay;
+  o.memory_samples = options.memory_samples;
+  o.first_block = options.first_block;
+  o.block = options.block;
+  // Everything the job touches is allocated before the drain starts; lock it in RAM so no page
+  // fault stalls the drain (real time only: virtual time has no deadlines to miss).
+  o.lock_memory = !options.virtual_time && options.realtime;
+  o.progress = options.progress;
+  o.total_samples = options.progress ? LocusGenerator::count_samples(plan) : 0;
+  const StreamResult s = stream_samples(
+      device, header, [&](std::span<ScanSample> out) { return locus.generate(out.data(), out.size()); }, o);
 
-  const JobClock::time_point produce = JobClock::now();
-  bool first = true;
-  JobClock::time_point last_report = JobClock::now();
-  while (std::size_t n = locus.generate(buffer.data(), first ? options.first_block : options.block)) {
-    if (!memory.push(std::span<const ScanSample>(buffer.data(), n))) break;  // the drain stopped
-    if (first) result.compile_time_s = compiled_s + seconds_since(produce), first = false;
-    if (options.progress && JobClock::now() - last_report > std::chrono::milliseconds(100)) {
-      options.progress(drain.samples_out(), total);
-      last_report = JobClock::now();
-    }
-  }
-  memory.close();
-  if (options.progress) {
-    while (!memory.aborted() && drain.samples_out() < total) {
-      options.progress(drain.samples_out(), total);
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-  }
-  result.drain = drain.wait();
-  if (result.memory_locked) unlock_memory();
-  result.device = device.end_job();
-
-  const DrainStats& d = result.drain;
-  result.samples = d.samples_out;
-  result.mark_time_s = static_cast<double>(d.samples_out) * tick;
+  result.compile_time_s = compiled_s + s.first_block_s;
+  result.memory_locked = s.memory_locked;
+  result.device = s.device;
+  result.drain = s.drain;
+  result.samples = s.drain.samples_out;
+  result.mark_time_s = static_cast<double>(s.drain.samples_out) * spec.pen.tick_s;
   result.commands = plan.commands.size();
-  result.stop_latency_us = d.stop_latency_us;
-  result.stop_latency_samples = d.stop_latency_samples;
-  switch (d.end) {
-    case DrainEnd::completed:
-      result.outcome = result.device.outcome == DeviceState::failed ? JobOutcome::failed
-                                                                    : JobOutcome::done;
-      result.fault = result.device.fault;
-      break;
-    case DrainEnd::cancelled:
-      result.outcome = JobOutcome::aborted;
-      break;
-    case DrainEnd::underrun:
-      result.outcome = JobOutcome::failed;
-      result.fault = DeviceFault{
-          FaultCategory::underrun,
-          "line memory underrun at sample " + std::to_string(d.stop_sample) +
-              ": the producer fell behind the device; laser off for the rest of the job",
-          d.stop_sample};
-      break;
-    case DrainEnd::device_fault:
-      // A device that was told to abort from outside refuses the next block: that is an abort.
-      if (result.device.outcome == DeviceState::aborted && !result.device.fault) {
-        result.outcome = JobOutcome::aborted;
-      } else {
-        result.outcome = JobOutcome::failed;
-        result.fault = fault_from(drain.error(), d.stop_sample);
-      }
-      break;
-  }
+  result.stop_latency_us = s.drain.stop_latency_us;
+  result.stop_latency_samples = s.drain.stop_latency_samples;
+  result.outcome = job_outcome(s.ending.outcome);
+  result.fault = s.ending.fault;
   if (result.outcome != JobOutcome::done) {
-    result.stopped_at = d.end == DrainEnd::device_fault && result.fault ? result.fault->at : d.stop_sample;
+    result.stopped_at = s.ending.stopped_at;
     result.ink_marked = locus_ink_fraction(plan, result.stopped_at);
   }
 }

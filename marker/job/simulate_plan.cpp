@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "marker/job/sim_evaluator.hpp"
 #include "marker/locus/locus_generator.hpp"
 #include "ringbuffer/laser_delay_line.hpp"
 

@@ -124,7 +124,6 @@ PartResult PartRunner::run(PartResult part, std::vector<CompiledJob> compiled,
                            const PartOptions& options) {
   if (options.phase) options.phase(PartPhase::marking, part.serials);
   part.device = device_.describe().name;
-  auto* scanner = dynamic_cast<SimScanner*>(&device_);
   for (std::size_t i = 0; i < job_.objects.size(); ++i) {
     ObjectRun o;
     o.name = job_.objects[i].name;
@@ -145,10 +144,6 @@ PartResult PartRunner::run(PartResult part, std::vector<CompiledJob> compiled,
       set_marked_text(spec, o.text, object.code() && object.code()->escapes);
       o.result = run_compiled_job(spec, std::move(compiled[i]), options.job, device_);
       o.started = true;
-      if (scanner) {
-        o.result.quality = simulated_quality(o.result, *scanner);
-        o.result.codes = verify_codes(spec, o.result.job, scanner->dose());
-      }
       if (o.result.outcome != JobOutcome::done) {
         part.outcome = o.result.outcome;
         part.stopped_object = i;

@@ -11,8 +11,9 @@
 //      each as one device job (run_compiled_job). The first object that does not end `done`
 //      ends the part: the objects after it are not started.
 //   3. record — the part's outcome (done only if every object is done; else the aborted or
-//      failed object's outcome), with the device's figures and, on the simulated scanner, the
-//      quality and pulse figures. An aborted or failed part's numbers are void for good.
+//      failed object's outcome), with the device's figures and, when the options carry an
+//      evaluator (the simulated scanner's: marker/job/sim_evaluator.hpp), each object's quality,
+//      pulse figures and codes read back. An aborted or failed part's numbers are void for good.
 //
 // A re-mark marks the texts of an earlier row again, in a row of its own linked to it, and
 // consumes no number.
@@ -37,7 +38,7 @@ struct ObjectRun {
   std::string pen;
   std::string text;
   bool started = false;  // false: an earlier object ended the part
-  JobResult result;      // when started (quality on the simulated scanner)
+  JobResult result;      // when started (quality etc. from the options' evaluator)
 };
 
 struct PartResult {
@@ -52,8 +53,8 @@ struct PartResult {
   std::string device;                            // describe().name
   double mark_time_s = 0;                        // device time over the objects
   std::uint64_t samples = 0;
-  // On the simulated scanner: the worst figure of any object (class: the lowest object's), and
-  // the widest pulse spacing (with its overlap).
+  // With an evaluator: the worst figure of any object (class: the lowest object's), and the
+  // widest pulse spacing (with its overlap).
   std::optional<Quality> quality;
   std::optional<PulseFigures> pulses;
 
@@ -61,7 +62,7 @@ struct PartResult {
 };
 
 struct PartOptions {
-  JobOptions job;  // for every object's device job (stop flag, injection, virtual time)
+  JobOptions job;  // for every object's device job (stop flag, injection, virtual time, evaluator)
   // Told at each step of a part with the values it consumed (so far): the kill test's probe.
   std::function<void(PartPhase, const std::map<std::string, std::int64_t>& serials)> phase;
 };

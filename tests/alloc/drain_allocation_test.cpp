@@ -11,6 +11,7 @@
 #include "fonts/catalog.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
+#include "marker/job/sim_evaluator.hpp"
 
 namespace {
 thread_local std::uint64_t t_allocations = 0;

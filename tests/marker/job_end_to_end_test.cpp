@@ -7,6 +7,7 @@
 #include "fonts/catalog.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
+#include "marker/job/sim_evaluator.hpp"
 #include "marker/locus/locus_generator.hpp"
 
 namespace mark {

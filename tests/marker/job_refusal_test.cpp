@@ -10,6 +10,7 @@
 #include "fonts/catalog.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
+#include "marker/job/sim_evaluator.hpp"
 #include "marker/job/job_checks.hpp"
 #include "tests/marker/plan_test_support.hpp"
 

@@ -18,6 +18,7 @@
 #include "marker/job/head_pen.hpp"
 #include "marker/job/intended_strokes.hpp"
 #include "marker/job/job.hpp"
+#include "marker/job/sim_evaluator.hpp"
 #include "marker/locus/locus_generator.hpp"
 #include "marker/plan/plan.hpp"
 #include "ringbuffer/laser_delay_line.hpp"

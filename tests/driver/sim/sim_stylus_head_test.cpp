@@ -200,7 +200,7 @@ TEST(SimStylusHead, JobBuffersComeFromTheHeader) {
   SimStylusHead small(o);
   EXPECT_THROW(small.begin_job(job(1001)), std::invalid_argument);
   small.begin_job(job(1000));
-  EXPECT_THROW(small.begin_job(job(1000)), std::logic_error);
+  EXPECT_THROW(small.begin_job(job(1000)), DeviceStateError);  // a job runs
 }
 
 TEST(SimStylusHead, SenseNoiseIsReproducible) {

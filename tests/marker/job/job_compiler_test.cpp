@@ -10,6 +10,7 @@
 #include "marker/job/device_program.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job_compiler.hpp"
+#include "marker/job/sim_evaluator.hpp"
 #include "tests/marker/recording_command_device.hpp"
 
 namespace mark {

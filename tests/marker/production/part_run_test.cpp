@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "base/error.hpp"
+#include "marker/job/sim_evaluator.hpp"
 #include "marker/production/part_run.hpp"
 #include "marker/store/digest.hpp"
 #include "marker/store/open_store.hpp"
@@ -61,9 +62,11 @@ struct Station {
   }
 };
 
-PartOptions virtual_time() {
+// `evaluator`: what tells the quality figures (the simulated scanner's); none: no figures.
+PartOptions virtual_time(MarkEvaluator* evaluator = nullptr) {
   PartOptions o;
   o.job.virtual_time = true;
+  o.job.evaluator = evaluator;
   return o;
 }
 
@@ -77,9 +80,10 @@ double figure(const JobResult& r, const std::string& name) {
 TEST(PartRun, ThreePartsTakeConsecutiveSerialsWithEveryObjectsPen) {
   Station st;
   SimScanner sim(st.sim_options());
+  SimEvaluator evaluator(sim);
   PartRunner runner = st.runner(sim);
   std::vector<PartPhase> phases;
-  PartOptions options = virtual_time();
+  PartOptions options = virtual_time(&evaluator);
   options.phase = [&](PartPhase p, const auto&) { phases.push_back(p); };
   for (int i = 0; i < 3; ++i) {
     const PartResult p = runner.mark_next(SystemClock().now(), options);

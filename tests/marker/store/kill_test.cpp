@@ -23,6 +23,7 @@
 #include <sstream>
 #include <thread>
 
+#include "marker/job/sim_evaluator.hpp"
 #include "marker/production/part_run.hpp"
 #include "marker/store/digest.hpp"
 #include "marker/store/utc_time.hpp"
@@ -69,8 +70,10 @@ constexpr const char* kKillJob = R"({
     const int n = std::snprintf(line, sizeof line, "%c %lld\n", what, static_cast<long long>(v));
     if (write(out_fd, line, static_cast<std::size_t>(n)) != n) _exit(3);
   };
+  SimEvaluator evaluator(scanner);  // as the command line marks: quality figures included
   PartOptions options;
   options.job.virtual_time = true;
+  options.job.evaluator = &evaluator;
   options.phase = [&](PartPhase p, const std::map<std::string, std::int64_t>& serials) {
     switch (p) {
       case PartPhase::allocating: shared->phase = allocating; break;

@@ -17,6 +17,7 @@
 #include "marker/job/head_pen.hpp"
 #include "marker/job/intended_strokes.hpp"
 #include "marker/job/job.hpp"
+#include "marker/job/sim_evaluator.hpp"
 #include "tests/driver/lmc/lmc_test_support.hpp"
 #include "tests/driver/lmc/usb/umockdev_board.hpp"
 
@@ -73,8 +74,12 @@ Marked through_board(const JobSpec& spec, const QualityReference& ref, double ch
   o.field_mm = spec.head.field_mm;
   o.chord_tolerance_mm = chord_tolerance_mm;
   LmcDevice device(open_usb_board(""), o);
+  // The scanner is the plant behind the board: its evaluator reads it under the board's lock.
+  SimEvaluator evaluator =
+      SimEvaluator::behind(scanner, [&](const std::function<void()>& f) { board.inspect(f); }, &ref);
   JobOptions jo;
   jo.realtime = false;
+  jo.evaluator = &evaluator;
   const JobResult r = run_job(spec, jo, device);
   EXPECT_EQ(r.outcome, JobOutcome::done) << (r.fault ? r.fault->message : "");
   board.stop_clock();
@@ -82,8 +87,8 @@ Marked through_board(const JobSpec& spec, const QualityReference& ref, double ch
   EXPECT_EQ(s.executor.underrun_events, 0u);
   EXPECT_EQ(s.executor.distance_mismatches, 0u);
   EXPECT_TRUE(board.violations().empty());
-  return {ref.evaluate(scanner.lit_paths(), scanner.dose()), scanner.dose().total(),
-          double(s.executor.ticks) * 10e-6, r.device};
+  EXPECT_TRUE(r.quality);
+  return {r.quality.value_or(Quality{}), scanner.dose().total(), double(s.executor.ticks) * 10e-6, r.device};
 }
 
 void print_side_by_side(double v, const Marked& d, const Marked& fine, const Marked& coarse) {

@@ -128,7 +128,7 @@ TEST(CliRefusal, GcodeAndToolMeasureOptions) {
        "raise the step-over or narrow the margin"},
       {{"gcode", "X", "-o", "OUT/a.ngc", "--dialect", "plain", "--header", std::string(80, 'G')},
        "header line 'GGGGGGGGGGGGGGGGGGGG…' has 80 characters, more than the plain dialect's 79 per line"},
-      {{"gcode", "X", "-o", "OUT/a.ngc", "--mode", "bogus"}, "--mode: bogus not in {depression,protrusion}"},
+      {{"gcode", "X", "-o", "OUT/a.ngc", "--mode", "bogus"}, "--mode: 'bogus' is not one of depression, protrusion"},
       {{"tool-measure", "x.png", "--pixel-size", "0"}, "--pixel-size: 0 is outside the range 0.01 to 10000 µm"},
       {{"tool-measure", "x.png", "--pixel-size", "5", "--tangential-angle", "0"},
        "--tangential-angle: 0 is outside the range above 0, up to 90 degrees"},
@@ -183,7 +183,7 @@ TEST(CliRefusal, MarkOptions) {
        "--speed: 'fast' is neither auto nor a number (range: 0.001 to 16000 mm/s (head SL14's positioning "
        "limit))"},
       {{"mark", "X", "--jump-speed", "1e9"},
-       "--jump-speed: 1e9 is outside the range 1 to 19200 mm/s (head SL10's positioning limit)"},
+       "--jump-speed: 1e+09 is outside the range 1 to 19200 mm/s (head SL10's positioning limit)"},
       {{"mark", "X", "--jump-speed", "50000"},
        "--jump-speed: 50000 is outside the range 1 to 19200 mm/s (head SL10's positioning limit)"},
       {{"mark", "X", "--dose-png", "OUT/dose.svg"},

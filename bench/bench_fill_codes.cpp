@@ -8,6 +8,7 @@
 #include "fonts/catalog.hpp"
 #include "marker/codes/code_object.hpp"
 #include "marker/fill/fill.hpp"
+#include "marker/job/code_photo.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/simulate_plan.hpp"
 #include "marker/layout/layout.hpp"
@@ -89,7 +90,7 @@ void BM_Verify8mmDataMatrix(benchmark::State& state) {
   const SimulatedJob marked = simulate_job(job);
   for (auto _ : state) {
     const CodeVerification v =
-        verify_code(marked.job.codes.front(), job.codes.front().spec, marked.scanner->dose(), job.verify);
+        check_code(marked.job.codes.front(), job.codes.front().spec, marked.scanner->dose(), job.verify);
     if (!v.data_match) state.SkipWithError("the 8 mm code did not read");
     benchmark::DoNotOptimize(v);
   }

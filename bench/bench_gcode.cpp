@@ -4,7 +4,11 @@
 //  * number of motion blocks against the same text flattened into 5° chords, F-Engrave's way
 //    (counters moves_ours / moves_5deg_chords; upright text keeps circular arcs, italic text
 //    turns them into ellipses that we biarc-fit within 0.005 mm);
-//  * pocketing time for a protrusion plate of 20 characters.
+//  * pocketing time for a protrusion plate of 20 characters;
+//  * the issue-25 cases: 10 / 40 / 160 rows of the 62-character sentence in QCAD's normal.cxf at
+//    1 mm (layout → strokes ordered across letters → G-code), with its rapid travel and lifts,
+//    and a 20-character V-carve in DejaVu Sans at 10 mm (font loaded once, outside the timing).
+//    F-Engrave's figures for the same cases come from scripts/fengrave_compare.py (docs/cnc.md).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -14,6 +18,7 @@
 #include "marker/cnc/depression.hpp"
 #include "marker/cnc/gcode_writer.hpp"
 #include "marker/cnc/protrusion.hpp"
+#include "marker/cnc/vcarve.hpp"
 #include "marker/geometry/flatten.hpp"
 #include "marker/layout/layout.hpp"
 
@@ -124,5 +129,60 @@ void BM_ProtrusionPlate20(benchmark::State& state) {
   state.counters["moves"] = static_cast<double>(moves);
 }
 BENCHMARK(BM_ProtrusionPlate20)->Unit(benchmark::kMillisecond);
+
+const std::string kSentence = "The quick brown fox jumps over the lazy dog. 0123456789 ABCDEF";  // 62 characters
+
+// Rows of the sentence at 1 mm in normal.cxf, the whole command's work but the font's loading:
+// layout, strokes, the visiting order, toolpath, G-code. The growth from 10 to 160 rows is the
+// figure the issue asks for (at most 16 times + start-up).
+void BM_GcodeRows(benchmark::State& state) {
+  static const auto font = mark::open_font(std::string(MARKER_SOURCE_DIR) + "/tests/fonts/data/normal.cxf", nullptr);
+  std::string text;
+  for (int k = 0; k < state.range(0); ++k) text += (k ? "\n" : "") + kSentence;
+  mark::LayoutOptions o;
+  o.height_mm = 1;
+  mark::CutSettings cut;
+  cut.tool_diameter_mm = 0.1;
+  cut.depth_mm = 0.1;
+  std::size_t lines = 0;
+  mark::RapidTravel travel;
+  for (auto _ : state) {
+    const mark::Figure f = mark::layout_text(text, *font, o);
+    const mark::Toolpath tp = mark::depression_toolpath(f, cut);
+    const std::string g = mark::write_gcode(tp, mark::GcodeOptions{});
+    lines = count_lines(g);
+    benchmark::DoNotOptimize(g.data());
+    state.PauseTiming();
+    travel = mark::rapid_travel(tp);
+    state.ResumeTiming();
+  }
+  state.counters["lines"] = static_cast<double>(lines);
+  state.counters["rapid_mm"] = travel.xy_mm;
+  state.counters["retracts"] = static_cast<double>(travel.retracts);
+}
+BENCHMARK(BM_GcodeRows)->Arg(10)->Arg(40)->Arg(160)->ArgName("rows")->Unit(benchmark::kMillisecond);
+
+// 20 characters of DejaVu Sans at 10 mm, v-carved with a 60° bit (no depth cap): medial axes,
+// paths, G-code.
+void BM_VCarve20(benchmark::State& state) {
+  static const auto font = mark::open_font("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", nullptr);
+  mark::LayoutOptions o;
+  o.height_mm = 10;
+  mark::CutSettings cut;
+  cut.tool_diameter_mm = 20;
+  const mark::VCarveSettings v;
+  std::size_t lines = 0, edges = 0;
+  for (auto _ : state) {
+    const mark::Figure f = mark::layout_text("Serial No. 2026-0815", *font, o);
+    const mark::VCarveResult r = mark::vcarve_toolpath(f, cut, v);
+    const std::string g = mark::write_gcode(r.toolpath, mark::GcodeOptions{});
+    lines = count_lines(g);
+    edges = r.axis_edges;
+    benchmark::DoNotOptimize(g.data());
+  }
+  state.counters["lines"] = static_cast<double>(lines);
+  state.counters["axis_edges"] = static_cast<double>(edges);
+}
+BENCHMARK(BM_VCarve20)->Unit(benchmark::kMillisecond);
 
 }  // namespace

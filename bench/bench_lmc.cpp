@@ -62,7 +62,7 @@ lmc::EncoderFigures encode_once(const CompiledJob& job, const JobSpec& spec, Str
                                 std::size_t& device_commands, F&& on_packet) {
   const lmc::FieldUnits units(110);
   ProgramStream program(job.plan, spec.laser, lmc_description(), mode);
-  const lmc::BoardPen pen = lmc::encode_pen(program.pen(), 0, units, lmc::LaserSource::fiber);
+  const lmc::BoardPen pen = lmc::encode_pen(program.pen(), 0, units);
   lmc::JobEncoder enc(units, [&](const lmc::ListPacket& p, const lmc::PacketInfo&) { on_packet(p); });
   enc.start_list(0.008, 1);
   enc.apply_pen(pen);
@@ -107,7 +107,7 @@ void encode_program(benchmark::State& state, int rows) {
   const CompiledJob job = compile_job(spec, DeviceLevel::commands);
   const DeviceProgram program = device_program(job.plan, spec.laser, lmc_description());
   const lmc::FieldUnits units(110);
-  const lmc::BoardPen pen = lmc::encode_pen(program.pen, 0, units, lmc::LaserSource::fiber);
+  const lmc::BoardPen pen = lmc::encode_pen(program.pen, 0, units);
   std::uint64_t checksum = 0, list_commands = 0;
   for (auto _ : state) {
     lmc::JobEncoder enc(units, [&](const lmc::ListPacket& p, const lmc::PacketInfo&) {

@@ -48,6 +48,7 @@ struct Line {
     context.job_sha256 = sha256_hex(kJob);
     context.now = SystemClock().now();
     store->start_station(context);
+    store->create_missing(job.used_counters(), job.shifts, context);
   }
   ~Line() {
     store.reset();

@@ -51,7 +51,7 @@ Trial trial(const HeadModel& head, ModuleStyle style, double module_mm, double s
   try {
     const SimulatedJob r = simulate_job(job);
     const CodeVerification& v = r.codes.front();
-    return {0, v.data_match, v.data_match && v.modules_wrong == 0, r.mark.mark_time_s, v.fill_ratio};
+    return {0, v.data_match, v.data_match && v.modules_wrong == 0, r.mark.mark_time_s, v.fill_ratio.value_or(0)};
   } catch (const std::exception&) {
     return {};  // a layout the style refuses (modules narrower than the beam) does not read
   }

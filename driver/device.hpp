@@ -57,6 +57,7 @@
 
 #include "driver/device_command.hpp"
 #include "driver/device_error.hpp"
+#include "driver/laser_source.hpp"
 #include "driver/vec2.hpp"
 #include "ringbuffer/sink.hpp"
 
@@ -139,13 +140,6 @@ struct DeviceDescription {
   // Samples the device buffers itself beyond what the drain hands it (a DAC's FIFO); the line
   // memory's lead is sized so such a device never starves. 0 for the simulator.
   std::size_t fifo_samples = 0;
-};
-
-// Laser source settings of a pen (fiber / MOPA).
-struct LaserSettings {
-  double power_pct = 100;       // 0..100 % of the source's power
-  double frequency_khz = 30;    // pulse repetition rate (Q-switch frequency)
-  double pulse_width_ns = 0;    // MOPA pulse width; 0 = the source's default
 };
 
 // A pen as a command-level device applies it: speeds, delays and laser settings. Sample-level

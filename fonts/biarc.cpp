@@ -146,7 +146,8 @@ double extent(const CubicBezier& c) {
   return m;
 }
 
-void fit_piece(const CubicBezier& c, double tolerance, int depth, std::vector<Element>& out) {
+void fit_piece(const CubicBezier& c, double tolerance, int depth, std::vector<Element>& out, std::size_t max_out) {
+  if (out.size() >= max_out) return;
   const double size = extent(c);
   if (size == 0) return;
   const double eps = size * 1e-12;
@@ -167,8 +168,8 @@ void fit_piece(const CubicBezier& c, double tolerance, int depth, std::vector<El
     return;
   }
   const auto [left, right] = c.split(0.5);
-  fit_piece(left, tolerance, depth + 1, out);
-  fit_piece(right, tolerance, depth + 1, out);
+  fit_piece(left, tolerance, depth + 1, out, max_out);
+  fit_piece(right, tolerance, depth + 1, out, max_out);
 }
 
 }  // namespace
@@ -256,16 +257,17 @@ double distance_to_element(const Element& e, const Point& p) {
   return best;
 }
 
-void fit_biarcs(const CubicBezier& c, double tolerance, std::vector<Element>& out) {
+bool fit_biarcs(const CubicBezier& c, double tolerance, std::vector<Element>& out, std::size_t max_out) {
   double from = 0;
   CubicBezier rest = c;
   for (double t : inflections(c)) {
     const auto [piece, tail] = rest.split((t - from) / (1 - from));
-    fit_piece(piece, tolerance, 0, out);
+    fit_piece(piece, tolerance, 0, out, max_out);
     rest = tail;
     from = t;
   }
-  fit_piece(rest, tolerance, 0, out);
+  fit_piece(rest, tolerance, 0, out, max_out);
+  return out.size() < max_out;
 }
 
 }  // namespace mark

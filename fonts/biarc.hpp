@@ -8,6 +8,7 @@
 // shared/reference/fonts_cnc.md): split the cubic at its inflections, fit the equal-tangent-length
 // biarc to each piece, measure the distance both ways by sampling, and halve the piece
 // (de Casteljau) until it is within tolerance.
+#include <limits>
 #include <vector>
 
 #include "fonts/element.hpp"
@@ -36,7 +37,9 @@ double distance_to_element(const Element& e, const Point& p);
 // Appends lit elements approximating `c` so that every point of the fit lies within `tolerance`
 // of the curve and every point of the curve within `tolerance` of the fit. Mostly circular arcs;
 // a line where a piece is straight to within a thousandth of the tolerance. Appends nothing for a
-// curve that is a single point.
-void fit_biarcs(const CubicBezier& c, double tolerance, std::vector<Element>& out);
+// curve that is a single point. Stops once `out` holds `max_out` elements and returns false then
+// (the fit is incomplete): a caller with an element budget pays for at most that many.
+bool fit_biarcs(const CubicBezier& c, double tolerance, std::vector<Element>& out,
+                std::size_t max_out = std::numeric_limits<std::size_t>::max());
 
 }  // namespace mark

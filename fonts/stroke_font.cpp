@@ -1,5 +1,6 @@
 #include "fonts/stroke_font.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "fonts/error.hpp"
@@ -22,9 +23,27 @@ void StrokeFont::add(Glyph glyph) {
   glyphs_.insert_or_assign(cp, std::move(glyph));
 }
 
+std::size_t StrokeFont::size() const {
+  if (!lazy_) return glyphs_.size();
+  return glyphs_.empty() ? lazy_->code_point_count() : code_points().size();
+}
+
+std::vector<char32_t> StrokeFont::code_points() const {
+  std::vector<char32_t> out;
+  for (const auto& [cp, g] : glyphs_) out.push_back(cp);
+  if (lazy_) {
+    const std::vector<char32_t> more = lazy_->code_points();
+    out.insert(out.end(), more.begin(), more.end());
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
+  return out;
+}
+
 const Glyph* StrokeFont::find(char32_t cp) const {
   auto it = glyphs_.find(cp);
-  return it == glyphs_.end() ? nullptr : &it->second;
+  if (it != glyphs_.end()) return &it->second;
+  return lazy_ ? lazy_->find(cp) : nullptr;
 }
 
 const Glyph& StrokeFont::glyph(char32_t cp) const {

@@ -1,10 +1,15 @@
 #pragma once
-// A stroke font: metrics plus glyphs looked up by Unicode code point.
+// A stroke font: metrics plus glyphs looked up by Unicode code point. A stroke-font file's glyphs
+// are all held (they are small and already strokes); an outline font's are made on first use by
+// its GlyphSource.
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "fonts/glyph.hpp"
+#include "fonts/glyph_source.hpp"
 
 namespace mark {
 
@@ -25,6 +30,9 @@ class StrokeFont {
   StrokeFont() = default;
   StrokeFont(std::string name, std::string source, FontMetrics metrics)
       : name_(std::move(name)), source_(std::move(source)), metrics_(metrics) {}
+  // A font whose glyphs come from `glyphs` as they are asked for (copies share the source).
+  StrokeFont(std::string name, std::string source, FontMetrics metrics, std::shared_ptr<const GlyphSource> glyphs)
+      : name_(std::move(name)), source_(std::move(source)), metrics_(metrics), lazy_(std::move(glyphs)) {}
 
   const std::string& name() const { return name_; }
   // Where the font came from: "built-in" or the file's path.
@@ -33,9 +41,16 @@ class StrokeFont {
   FontMetrics& metrics() { return metrics_; }
 
   void add(Glyph glyph);
-  std::size_t size() const { return glyphs_.size(); }
+  // How many code points have a glyph (an outline font: how many its character map maps).
+  std::size_t size() const;
+  // Every code point with a glyph, ascending; makes no glyph.
+  std::vector<char32_t> code_points() const;
+  // The glyphs held in memory: all of a stroke-font file's, none of an outline font's (use
+  // code_points() and find() to visit those).
   const std::map<char32_t, Glyph>& glyphs() const { return glyphs_; }
 
+  // Makes the glyph on first use for an outline font (see GlyphSource::find, which may throw
+  // FontFileError); safe to call from several threads on a font nobody add()s to.
   const Glyph* find(char32_t code_point) const;
   // Throws MissingGlyphError naming the character and the font.
   const Glyph& glyph(char32_t code_point) const;
@@ -49,6 +64,7 @@ class StrokeFont {
   std::string source_;
   FontMetrics metrics_;
   std::map<char32_t, Glyph> glyphs_;
+  std::shared_ptr<const GlyphSource> lazy_;
   char32_t replacement_ = U'?';
 };
 

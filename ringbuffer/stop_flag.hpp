@@ -7,7 +7,8 @@
 #include <atomic>
 #include <cstdint>
 #include <ctime>
-#include <stdexcept>
+
+#include "base/progress.hpp"  // Interrupted: what a stopped computation throws
 
 namespace mark {
 
@@ -46,13 +47,6 @@ class StopFlag {
  private:
   std::atomic<bool> requested_{false};
   std::atomic<std::int64_t> requested_at_ns_{0};
-};
-
-// Thrown by long computations (planning, file writing) that noticed a stop request: nothing was
-// finished, nothing was written.
-class Interrupted : public std::runtime_error {
- public:
-  Interrupted() : std::runtime_error("interrupted; nothing was written") {}
 };
 
 }  // namespace mark

@@ -11,10 +11,11 @@ packages=(
   libsqlite3-dev sqlite3 libpq-dev postgresql   # serial store: SQLite (default) and PostgreSQL (tests start a private server)
   libssl-dev                                    # SHA-256 of job files in the audit log (libcrypto)
   libhowardhinnant-date-dev tzdata              # time zones for dates, shifts and counter resets
-  libzint-dev libdmtx-dev libzbar-dev           # 2D codes: zint encodes, libdmtx and ZBar decode the simulated mark
+  libzint-dev libdmtx-dev libzbar-dev libzxing-dev  # 2D codes: zint encodes; ZXing-C++, libdmtx and ZBar decode the simulated mark
   umockdev libumockdev-dev                      # the emulated LMC board behind real libusb (usbfs ioctls)
   hershey-fonts-data librecad-data
   fonts-dejavu-core fonts-liberation2           # TrueType outlines for the fill tests (DejaVu Sans, Liberation Sans)
+  python3-fonttools                             # writes the outline-font fixtures (tests/fonts/data/outline/make_fixtures.py)
   libpython3.11 libedit2 libtirpc3   # runtime of LinuxCNC's rs274 (G-code validator, fetch_rs274.sh)
 )
 

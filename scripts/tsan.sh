@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ThreadSanitizer over everything that runs two threads: the ring buffer suite (line memory
 # stress, drain, the stylus drain), the LMC device against its in-process emulated board (flow
-# control, abort from every state, unplug, framing until abort), and from the engine the job
+# control, abort from every state, unplug, framing until abort, the stop sequence with each
+# command failing, the settings every list re-sends), and from the engine the job
 # runner's threaded paths — real-time jobs, stop requests from another thread, command-level jobs
 # with their abort watcher, Ctrl-C on the real binary (marker_threads_tests) — each repeated, so
 # a rare interleaving has several chances to show. TSan fails the run on the first data race.
@@ -18,7 +19,8 @@ ninja -C "$build" ringbuffer_tests driver_tests marker_threads_tests marker
 # halt_on_error: the first race fails the run; second_deadlock_stack for readable reports.
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
 "$build/tests/ringbuffer_tests" --gtest_repeat="$repeats" --gtest_brief=1
-"$build/tests/driver_tests" --gtest_repeat="$repeats" --gtest_brief=1 --gtest_filter='LmcDevice.*'
+"$build/tests/driver_tests" --gtest_repeat="$repeats" --gtest_brief=1 \
+  --gtest_filter='LmcDevice.*:LmcSettingsResent.*:*LmcStopSequence*:LmcMaskedLink.*'
 "$build/tests/marker_threads_tests" --gtest_repeat="$repeats" --gtest_brief=1 \
   --gtest_filter='JobSafety.*:JobEndToEnd.RealTime*:DeviceProgram.*:CliMark.CtrlC*'
 echo "tsan: clean over $repeats runs of the threaded tests"

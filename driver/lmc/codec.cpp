@@ -137,6 +137,18 @@ std::uint16_t encode_power_12bit(double pct) {
   return static_cast<std::uint16_t>(std::round(pct * 4095.0 / 100.0));
 }
 
+std::uint16_t encode_co2_fpk(double khz) {
+  if (!(khz > 0) || !std::isfinite(khz))
+    refuse("first-pulse killer", fmt("%g kHz is not a frequency", khz));
+  return rounded(2000.0 / khz, 1, 65535, "first-pulse killer", "words (2000 / kHz)", khz);
+}
+
+std::uint16_t encode_power_ratio(double pct, double khz) {
+  if (!(pct >= 0 && pct <= 100)) refuse("power", fmt("%g %% is outside 0 .. 100 %%", pct));
+  if (!(khz > 0) || !std::isfinite(khz)) refuse("power ratio", fmt("%g kHz is not a frequency", khz));
+  return rounded(200.0 * pct / khz, 0, 65535, "power ratio", "50 ns (200 × % / kHz)", pct);
+}
+
 std::uint16_t encode_pulse_width_ns(double ns) {
   return rounded(ns, 1, 65535, "MOPA pulse width", "ns", ns);
 }

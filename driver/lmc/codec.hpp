@@ -236,18 +236,30 @@ class EncodeError : public DeviceError {
   using DeviceError::DeviceError;
 };
 
+// The references disagree (galvo.md §1.4): two of three send µs (galvoplotter with the sign flag,
+// balor as a plain word), meerk40t since 2025-08 sends µs / 10. LmcOptions defaults to the
+// majority; `marker lmc probe` measures what a board takes.
 enum class PolygonDelayUnit {
-  ten_us,     // µs / 10, no sign (meerk40t since 2025-08; its test vector; the default)
-  signed_us   // µs with the sign flag (galvoplotter, older meerk40t)
+  ten_us,     // µs / 10, no sign (meerk40t since 2025-08, commit 3616dfe5d; its test vector)
+  signed_us   // µs with the sign flag (galvoplotter, balor, meerk40t before 2025-08)
 };
 
-// How the field frame maps onto the board's two coordinate words: p1 = x, p2 = y, then
-// swapped and/or mirrored to suit how the head is wired (meerk40t's swap_xy / flip options).
+// How the field frame (x right, y up, as the layout has it) maps onto the board's two
+// coordinate words: p1 = x, p2 = y, each mirrored when flipped, then swapped. AxisMap{} is that
+// plain mapping; kEzCadAxes is what EzCad does on a default machine.
 struct AxisMap {
   bool swap_xy = false;
   bool flip_x = false;
   bool flip_y = false;
+  bool operator==(const AxisMap&) const = default;
 };
+// EzCad's default: the first word is y, the second x, neither mirrored. Balor labels MarkTo's
+// words (y, x) from EzCad captures on an LMCV4-FIBER-M (balor/command_list.py, OpCut / OpTravel),
+// and meerk40t's galvo device defaults to swap_xy + flip_y on its y-down scene since 09d37c2
+// (2022), which is the same map (its test vector: scene (20, 20) mm on a 110 mm lens → words
+// D174 2E8B). The same settings in meerk40t's terms: swap_xy = ours, flip_x = ours,
+// flip_y = not ours (its scene's y points down). docs/lmc.md, "Axes".
+inline constexpr AxisMap kEzCadAxes{true, false, false};
 
 // Everything a unit encoder needs besides the value.
 class FieldUnits {
@@ -315,6 +327,11 @@ std::array<std::uint16_t, 2> encode_polygon_delay(double seconds, PolygonDelayUn
 std::uint16_t encode_period_50ns(double khz);
 std::uint16_t encode_period_100ns(double khz);
 std::uint16_t encode_power_12bit(double pct);
+// CO2 / UV (meerk40t balormk/controller.py, fpk and power): the first-pulse killer as 2000 / f_kHz
+// (SetCo2FPK, both words) and the power as the PWM's high time in 50 ns, 200 · P% / f_kHz
+// (MarkPowerRatio: P% of the MarkFreq period of 10000 / f_kHz × 100 ns).
+std::uint16_t encode_co2_fpk(double khz);
+std::uint16_t encode_power_ratio(double pct, double khz);
 std::uint16_t encode_pulse_width_ns(double ns);
 // A correction delta in board units → sign-magnitude word; |delta| must be < 0x8000.
 std::uint16_t encode_cor_delta(std::int64_t delta);

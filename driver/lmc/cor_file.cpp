@@ -53,6 +53,7 @@ std::uint16_t delta_word(double v, const std::string& source, std::size_t entry,
 
 CorrectionTable parse_cor(std::span<const std::uint8_t> b, const std::string& source) {
   CorrectionTable t;
+  t.source = source;
   std::size_t table, pair_bytes;
   if (has_lmc1cor_label(b)) {
     t.format = CorrectionTable::Format::lmc1cor_float;
@@ -78,6 +79,24 @@ CorrectionTable parse_cor(std::span<const std::uint8_t> b, const std::string& so
     t.entries[i] = {delta_word(dx, source, i, 'x'), delta_word(dy, source, i, 'y')};
   }
   return t;
+}
+
+void check_cor_lens(const CorrectionTable& t, double field_mm) {
+  const double lens = t.lens_mm();
+  char buf[320];
+  if (!(lens > 0) || !std::isfinite(lens)) {
+    std::snprintf(buf, sizeof buf,
+                  "its lens scale %g units/mm gives no lens size (65536 / scale); the field is %g mm",
+                  t.scale, field_mm);
+    bad(t.source, buf);
+  }
+  if (std::abs(lens - field_mm) > kCorLensTolerance * field_mm) {
+    std::snprintf(buf, sizeof buf,
+                  "made for a %.3f mm lens (scale %.4f units/mm), but the lens field is %g mm: set "
+                  "the field to %.3f mm or use a correction file for this lens",
+                  lens, t.scale, field_mm, lens);
+    bad(t.source, buf);
+  }
 }
 
 CorrectionTable read_cor_file(const std::string& path) {

@@ -24,10 +24,24 @@ inline constexpr std::size_t kCorEntries = kCorGrid * kCorGrid;
 struct CorrectionTable {
   enum class Format { lmc1cor_float, legacy_int };
   Format format = Format::legacy_int;
-  double scale = 0;  // the file's lens scale (as EzCad wrote it); reported, not applied
+  std::string source;  // the file it came from, for messages
+  // The file's lens scale as EzCad wrote it: board units per mm, so the lens it was made for
+  // is 65536 / scale mm (meerk40t sets its lens size so: balormk/gui/balorconfig.py,
+  // on_corfile_changed).
+  double scale = 0;
+  double lens_mm() const { return scale > 0 ? 65536.0 / scale : 0; }
   // (dx, dy) per grid point as the board takes them: sign-magnitude words.
   std::vector<std::array<std::uint16_t, 2>> entries;
 };
+
+// How far the lens field may differ from the one the table was made for: the table's deltas
+// are in board units of its own lens, so a table for a 70 mm lens on a 110 mm field corrects
+// the wrong places by the wrong amounts.
+inline constexpr double kCorLensTolerance = 0.001;  // relative
+
+// Refuses a table whose lens differs from `field_mm` by more than kCorLensTolerance, or whose
+// scale gives no lens at all, naming both sizes. Throws CorFileError.
+void check_cor_lens(const CorrectionTable& table, double field_mm);
 
 class CorFileError : public DeviceError {
  public:

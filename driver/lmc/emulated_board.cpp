@@ -18,11 +18,53 @@ std::string hex(std::uint16_t v) {
 
 }  // namespace
 
+namespace {
+
+void shallow(BoardOptions& o) { o.list_capacity = 2; }
+const BoardVariant kVariants[] = {
+    {"reference", "whole ticks per move, parameter words free, a JumpTo does not wait, polygon delay in µs, "
+                  "4 packets, registers 0 at power-on", [](BoardOptions&) {}},
+    {"exact_ticks", "moves in their exact time, the fraction of a tick carried",
+     [](BoardOptions& o) { o.behaviour.exact_move_time = true; }},
+    {"word_ticks", "every word that is not a move takes a tick of its own",
+     [](BoardOptions& o) { o.behaviour.word_ticks = true; }},
+    {"jump_waits", "a JumpTo after a mark run waits out the laser-off delay",
+     [](BoardOptions& o) { o.behaviour.jump_waits_off_delay = true; }},
+    {"polygon_10us", "PolygonDelay read in 10 µs units (meerk40t since 2025)",
+     [](BoardOptions& o) { o.polygon_delay_unit = PolygonDelayUnit::ten_us; }},
+    {"shallow_buffer", "2 packets buffered before READY clears", shallow},
+    {"deep_buffer", "16 packets buffered before READY clears", [](BoardOptions& o) { o.list_capacity = 16; }},
+    {"foreign_settings", "registers as another program left them (jump delay 500 µs, ...)",
+     [](BoardOptions& o) { o.behaviour.foreign_settings = true; }},
+    {"slowest", "word ticks, a waiting JumpTo, polygon delay in 10 µs, foreign registers, 2 packets",
+     [](BoardOptions& o) {
+       o.behaviour.word_ticks = o.behaviour.jump_waits_off_delay = o.behaviour.foreign_settings = true;
+       o.polygon_delay_unit = PolygonDelayUnit::ten_us;
+       shallow(o);
+     }},
+};
+
+}  // namespace
+
+std::span<const BoardVariant> board_variants() { return kVariants; }
+
+BoardOptions with_variant(BoardOptions options, std::string_view name) {
+  std::string known;
+  for (const BoardVariant& v : kVariants) {
+    if (v.name == name) {
+      v.apply(options);
+      return options;
+    }
+    known += (known.empty() ? "" : ", ") + std::string(v.name);
+  }
+  throw DeviceError("emulated board: no behaviour variant '" + std::string(name) + "' (known: " + known + ")");
+}
+
 EmulatedBoard::EmulatedBoard(BoardOptions options, BoardFaults faults)
     : options_(options),
       faults_(faults),
       units_(options.field_mm, options.axes, options.polygon_delay_unit),
-      executor_(units_, options.laser_bit, options.red_bit) {
+      executor_(units_, options.laser_bit, options.red_bit, options.behaviour) {
   executor_.set_scanner(options_.scanner);
 }
 
@@ -58,8 +100,20 @@ Urb EmulatedBoard::out(std::span<const std::uint8_t> bytes) {
   if (stalled_) return Urb::stall;
   if (bytes.size() == kCommandBytes) {
     const Word w = load(bytes.data());
+    if (const auto fault = single_fault(w)) {
+      if (*fault == Urb::no_device) {
+        lock.unlock();
+        if (on_unplug) on_unplug();
+      }
+      if (*fault != Urb::done) return *fault;
+    }
     wire_.push_back(WireRecord{now, false, w, 0, status_locked()});
     on_single(w);
+    if (drop_next_reply_) {  // SingleFault::no_answer: taken, never answered
+      drop_next_reply_ = false;
+      const CommandSpec* spec = find_command(w.opcode());
+      if (spec && spec->reply && !replies_.empty()) replies_.pop_back();
+    }
     return Urb::done;
   }
   if (bytes.size() != kPacketBytes) {
@@ -106,6 +160,41 @@ Urb EmulatedBoard::in(std::array<std::uint8_t, kReplyBytes>& reply) {
 void EmulatedBoard::clear_halt() {
   std::lock_guard lock(mutex_);
   stalled_ = false;
+}
+
+// faults_.single: what becomes of this command (nullopt: nothing special).
+std::optional<Urb> EmulatedBoard::single_fault(const Word& w) {
+  if (!faults_.single || w.opcode() != faults_.single->opcode) return std::nullopt;
+  if (++single_fault_seen_ != faults_.single->occurrence) return std::nullopt;
+  const double now = double(ticks_) * kTick_s;
+  switch (faults_.single->kind) {
+    case SingleFault::Kind::stall: stalled_ = true; return Urb::stall;
+    case SingleFault::Kind::hang: hang_until_s_ = now + faults_.single->hang_s; return Urb::pending;
+    case SingleFault::Kind::unplug: unplug_locked(); return Urb::no_device;
+    case SingleFault::Kind::no_answer: drop_next_reply_ = true; return Urb::done;
+  }
+  return std::nullopt;
+}
+
+// A word for another kind of source than the board's laser: it would set nothing the laser
+// understands (a CO2 power ratio on a fiber's driver, a Q-switch period on a CO2's).
+void EmulatedBoard::check_source_word(std::uint16_t op, const std::string& where) {
+  const LaserSource src = options_.behaviour.source;
+  const bool fiber = src == LaserSource::fiber || src == LaserSource::mopa;
+  bool wrong = false;
+  switch (static_cast<Op>(op)) {
+    case Op::QSwitchPeriod:
+    case Op::MarkCurrent:
+    case Op::FiberOpenMO: wrong = !fiber; break;
+    case Op::FiberYLPMPulseWidth: wrong = src != LaserSource::mopa; break;
+    case Op::MarkFreq:
+    case Op::MarkPowerRatio:
+    case Op::SetCo2Fpk: wrong = fiber; break;
+    default: break;
+  }
+  if (wrong)
+    violation(std::string(command_name(op)) + where + " on a board driving a " +
+              std::string(to_string(src)) + " source");
 }
 
 void EmulatedBoard::on_single(const Word& w) {
@@ -184,6 +273,7 @@ void EmulatedBoard::on_packet(std::span<const std::uint8_t> bytes) {
     }
     if (!is_list(op)) violation("single command " + hex(op) + where);
     else if (!find_command(op)) violation("unknown list command " + hex(op) + where);
+    else check_source_word(op, where);
     if (op == static_cast<std::uint16_t>(Op::EndOfList)) ended = true;
   }
   packets_.push_back(words);
@@ -265,9 +355,53 @@ void EmulatedBoard::start_clock(double time_scale) {
   });
 }
 
+void EmulatedBoard::start_virtual_clock() {
+  stop_clock();
+  clock_run_ = true;
+  clock_ = std::thread([this] {
+    using Clock = std::chrono::steady_clock;
+    auto last = Clock::now();
+    while (clock_run_.load()) {
+      std::uint64_t ran = 0;
+      {
+        std::lock_guard lock(mutex_);
+        const bool was_finished = executor_.finished();
+        try {
+          ran = executor_.run(1000, *this, true);
+        } catch (const std::exception& e) {
+          violation(std::string("the scanner refused the board's output: ") + e.what());
+          executor_.stop();
+        }
+        ticks_ += ran;
+        if (!was_finished && executor_.finished()) finished_cv_.notify_all();
+        if (ran == 0) {
+          // Waiting (for data, for ExecuteList): time passes as on the wall clock, so READY
+          // withheld for a while comes back.
+          const auto now = Clock::now();
+          ticks_ += static_cast<std::uint64_t>(std::chrono::duration<double>(now - last).count() / kTick_s);
+        }
+      }
+      last = Clock::now();
+      if (ran == 0) std::this_thread::sleep_for(std::chrono::microseconds(100));
+    }
+  });
+}
+
 void EmulatedBoard::stop_clock() {
   clock_run_ = false;
   if (clock_.joinable()) clock_.join();
+}
+
+void EmulatedBoard::set_source(LaserSource source) {
+  std::lock_guard lock(mutex_);
+  options_.behaviour.source = source;
+  executor_.set_source(source);
+}
+
+void EmulatedBoard::set_single_fault(const SingleFault& fault) {
+  std::lock_guard lock(mutex_);
+  faults_.single = fault;
+  single_fault_seen_ = 0;
 }
 
 void EmulatedBoard::unplug_locked() {

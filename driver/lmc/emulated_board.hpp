@@ -26,6 +26,7 @@
 #include <functional>
 #include <mutex>
 #include <optional>
+#include <ostream>
 #include <span>
 #include <string>
 #include <thread>
@@ -40,14 +41,43 @@ namespace mark::lmc {
 
 struct BoardOptions {
   double field_mm = 110;  // for decoding coordinates only (the board itself works in units)
-  AxisMap axes;
-  PolygonDelayUnit polygon_delay_unit = PolygonDelayUnit::ten_us;
+  AxisMap axes = kEzCadAxes;
+  // How the board reads PolygonDelay: µs with the sign flag unless a variant says otherwise
+  // (the host's default too; docs/lmc.md).
+  PolygonDelayUnit polygon_delay_unit = PolygonDelayUnit::signed_us;
   std::size_t list_capacity = 4;  // packets the board buffers (READY clears when full)
+  // What the open drivers leave open (list_executor.hpp), and the laser on its outputs.
+  ExecutorBehaviour behaviour;
   std::uint32_t serial = 0x4C4D4301;
   std::array<std::uint16_t, 3> version{0x0001, 0x0010, 0x0002};
   int laser_bit = 0, red_bit = 8;
   std::uint16_t input_port = 0;
   Sink<ScanSample>* scanner = nullptr;  // where the executed list goes (may be null)
+};
+
+// The board's behaviour variants: every reading of the board the open drivers leave open, by
+// name, so a test of the session (and `marker lmc probe` in CI) runs against each.
+struct BoardVariant {
+  std::string_view name;  // a C identifier, for test names and --board-variant
+  std::string_view what;
+  void (*apply)(BoardOptions&);
+};
+// A variant prints as its name (logs, and test parameters in CTest's list).
+inline std::ostream& operator<<(std::ostream& os, const BoardVariant& v) { return os << v.name; }
+std::span<const BoardVariant> board_variants();
+// The options with the variant applied; DeviceError naming the known ones for an unknown name.
+BoardOptions with_variant(BoardOptions options, std::string_view name);
+
+// One single command answered wrongly, to test what the host does about it (the stop
+// sequence): the `occurrence`-th time (1-based) the board receives `opcode`, it stalls EP 0x02
+// (until CLEAR_HALT), takes the command but never answers (the host's read times out), takes
+// nothing for `hang_s` (the write times out), or is unplugged.
+struct SingleFault {
+  enum class Kind { stall, no_answer, hang, unplug };
+  std::uint16_t opcode = 0;
+  std::size_t occurrence = 1;
+  Kind kind = Kind::no_answer;
+  double hang_s = 0.05;  // device time: shorter than the link timeout, so the next write gets through
 };
 
 struct BoardFaults {
@@ -58,6 +88,7 @@ struct BoardFaults {
   double hang_s = 0;                                       // 0: for good
   std::optional<std::size_t> unplug_at_packet;
   std::optional<double> unplug_after_execute_s;            // device time after ExecuteList
+  std::optional<SingleFault> single;
 };
 
 // What happens to one URB.
@@ -102,8 +133,17 @@ class EmulatedBoard : private ListFeed {
   // The board's clock: a thread advancing it `time_scale` × as fast as the wall clock, or
   // manual steps.
   void start_clock(double time_scale = 1.0);
+  // A virtual clock: the list runs as fast as the thread can execute it, but never past the
+  // data it has (no underrun of its own making); while it waits, time passes as the wall clock's.
+  void start_virtual_clock();
   void stop_clock();
   void advance(double seconds);
+
+  // The laser on the board's outputs from now on (the job's source).
+  void set_source(LaserSource source);
+
+  // Arms a single-command fault from now on (occurrences counted from here).
+  void set_single_fault(const SingleFault& fault);
 
   // Unplug now; `on_unplug` (set before) is called once, outside the lock (the umockdev
   // fixture sends the "remove" uevent from it).
@@ -128,8 +168,9 @@ class EmulatedBoard : private ListFeed {
   void pop() override;
   std::uint16_t status_locked() const;
   bool ready_locked() const;
-  Urb fault_for_packet(std::size_t number);
   void on_single(const Word& w);
+  std::optional<Urb> single_fault(const Word& w);
+  void check_source_word(std::uint16_t op, const std::string& where);
   void on_packet(std::span<const std::uint8_t> bytes);
   void violation(std::string what);
   void advance_locked(std::uint64_t ticks);
@@ -152,6 +193,8 @@ class EmulatedBoard : private ListFeed {
   std::size_t packets_lost_ = 0;
   double withhold_until_s_ = -1;
   bool stalled_ = false, unplugged_ = false, unplug_notified_ = false;
+  std::size_t single_fault_seen_ = 0;  // occurrences of faults_.single->opcode
+  bool drop_next_reply_ = false;
   double hang_until_s_ = -1;      // < 0: not hanging; +inf: for good
   std::optional<double> execute_at_s_;
   bool cor_open_ = false;

@@ -1,5 +1,6 @@
 #include "driver/lmc/job_encoder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -26,6 +27,9 @@ static_assert(layout(Op::DelayTime, {Unit::time_10us}) && layout(Op::LaserOnPoin
 static_assert(layout(Op::QSwitchPeriod, {Unit::period_50ns}) &&
               layout(Op::MarkCurrent, {Unit::power_12bit}) &&
               layout(Op::FiberYLPMPulseWidth, {Unit::pulse_width_ns}));
+static_assert(layout(Op::MarkFreq, {Unit::period_100ns}) &&
+              layout(Op::SetCo2Fpk, {Unit::word, Unit::word}) &&
+              layout(Op::MarkPowerRatio, {Unit::word}));
 static_assert(layout(Op::ListWritePort, {Unit::port}) && layout(Op::ReadyMark, {}) &&
               layout(Op::EndOfList, {}));
 
@@ -40,8 +44,10 @@ double signed_s(std::array<std::uint16_t, 2> d) { return decode_signed_us(d[0], 
 
 }  // namespace
 
-BoardPen encode_pen(const DevicePen& p, std::size_t i, const FieldUnits& u, LaserSource source) {
+BoardPen encode_pen(const DevicePen& p, std::size_t i, const FieldUnits& u) {
+  check_laser_settings(p.laser, "lmc: pen " + std::to_string(i) + ": ");
   BoardPen b;
+  b.source = p.laser.source;
   b.jump_speed = encode_speed(p.jump_speed_mm_s, u, pen_name(i, "jump speed"));
   b.mark_speed = encode_speed(p.mark_speed_mm_s, u, pen_name(i, "mark speed"));
   b.laser_on_delay = encode_signed_us(p.laser_on_delay_s, pen_name(i, "laser-on delay"));
@@ -49,10 +55,21 @@ BoardPen encode_pen(const DevicePen& p, std::size_t i, const FieldUnits& u, Lase
   b.jump_delay = encode_signed_us(p.jump_delay_s, pen_name(i, "jump delay"));
   b.polygon_delay = encode_polygon_delay(p.polygon_delay_s, u.polygon_unit());
   b.mark_delay_10us = encode_time_10us(p.mark_delay_s, kMaxDelayTicks, pen_name(i, "mark delay"));
-  b.qswitch_period = encode_period_50ns(p.laser.frequency_khz);
-  b.power = encode_power_12bit(p.laser.power_pct);
-  if (source == LaserSource::mopa && p.laser.pulse_width_ns > 0)
-    b.pulse_width = encode_pulse_width_ns(p.laser.pulse_width_ns);
+  switch (p.laser.source) {
+    case LaserSource::fiber:
+    case LaserSource::mopa:
+      b.qswitch_period = encode_period_50ns(p.laser.frequency_khz);
+      b.power = encode_power_12bit(p.laser.power_pct);
+      if (p.laser.source == LaserSource::mopa && p.laser.pulse_width_ns > 0)
+        b.pulse_width = encode_pulse_width_ns(p.laser.pulse_width_ns);
+      break;
+    case LaserSource::co2:
+    case LaserSource::uv:
+      b.mark_period = encode_period_100ns(p.laser.frequency_khz);
+      b.fpk = encode_co2_fpk(p.laser.frequency_khz);
+      b.power_ratio = encode_power_ratio(p.laser.power_pct, p.laser.frequency_khz);
+      break;
+  }
   return b;
 }
 
@@ -65,22 +82,25 @@ void JobEncoder::emit_packet(const PacketInfo& info) {
   figures_.list_commands += packet_.used();
   figures_.estimated_s += packet_estimate_s_;
   packet_.clear();
-  packet_estimate_s_ = 0;
+  packet_estimate_s_ = packet_unverified_s_ = 0;
 }
 
 void JobEncoder::flush_full() {
   // Commands before the one being encoded are complete; its own words may straddle.
-  emit_packet(PacketInfo{current_, packet_estimate_s_, false});
+  emit_packet(PacketInfo{current_, packet_estimate_s_, false, packet_estimate_s_ + packet_unverified_s_});
 }
 
 void JobEncoder::start_list(double open_mo_delay_s, std::uint16_t port_bits) {
   // Whatever a failed or aborted list left unsent is dropped here: it must never reach the
   // board as part of the next list.
   packet_.clear();
-  packet_estimate_s_ = 0;
+  packet_estimate_s_ = packet_unverified_s_ = 0;
+  // Nothing of what an earlier list set is assumed (see the top of the header).
   jump_speed_ = mark_speed_ = kUnknown;
-  qswitch_.reset(), power_.reset();
-  pulse_width_.reset(), on_delay_.reset(), off_delay_.reset(), polygon_.reset();
+  qswitch_.reset(), power_.reset(), pulse_width_.reset();
+  mark_period_.reset(), fpk_.reset(), power_ratio_.reset();
+  on_delay_.reset(), off_delay_.reset(), polygon_.reset(), jump_delay_.reset();
+  jump_delay_s_ = polygon_s_ = polygon_worst_s_ = 0;
   in_run_ = false;
   pen_ = nullptr;
   push(word(Op::ReadyMark));
@@ -97,9 +117,6 @@ void JobEncoder::send_jump_speed(std::uint16_t w) {
   jump_speed_ = w;
 }
 
-// The board keeps its jump delay across lists, and nothing documents its power-on value. Like
-// meerk40t (whose golden job sends no JumpDelay) this takes it as 0 on a fresh connection and
-// then tracks every value sent, so a pen with jump delay 0 after one with 200 µs does send 0.
 void JobEncoder::send_jump_delay(std::array<std::uint16_t, 2> d) {
   push(word(Op::JumpDelay, d[0], d[1]));
   ++figures_.parameter_commands;
@@ -116,13 +133,26 @@ void JobEncoder::apply_pen(const BoardPen& p) {
     have = value;
   };
   set_jump_speed(p.jump_speed);
-  if (p.pulse_width) param(pulse_width_, *p.pulse_width, word(Op::FiberYLPMPulseWidth, *p.pulse_width));
-  param(qswitch_, p.qswitch_period, word(Op::QSwitchPeriod, p.qswitch_period));
-  param(power_, p.power, word(Op::MarkCurrent, p.power));
+  switch (p.source) {
+    case LaserSource::fiber:
+    case LaserSource::mopa:
+      if (p.pulse_width) param(pulse_width_, *p.pulse_width, word(Op::FiberYLPMPulseWidth, *p.pulse_width));
+      param(qswitch_, p.qswitch_period, word(Op::QSwitchPeriod, p.qswitch_period));
+      param(power_, p.power, word(Op::MarkCurrent, p.power));
+      break;
+    case LaserSource::co2:
+    case LaserSource::uv:
+      param(mark_period_, p.mark_period, word(Op::MarkFreq, p.mark_period));
+      param(fpk_, p.fpk, word(Op::SetCo2Fpk, p.fpk, p.fpk));
+      param(power_ratio_, p.power_ratio, word(Op::MarkPowerRatio, p.power_ratio));
+      break;
+  }
   if (mark_speed_ != p.mark_speed) send_mark_speed(p.mark_speed);
   param(on_delay_, p.laser_on_delay, word(Op::LaserOnDelay, p.laser_on_delay[0], p.laser_on_delay[1]));
   param(off_delay_, p.laser_off_delay, word(Op::LaserOffDelay, p.laser_off_delay[0], p.laser_off_delay[1]));
   param(polygon_, p.polygon_delay, word(Op::PolygonDelay, p.polygon_delay[0], p.polygon_delay[1]));
+  polygon_s_ = std::max(0.0, decode_polygon_delay(p.polygon_delay[0], p.polygon_delay[1], units_.polygon_unit()));
+  polygon_worst_s_ = std::max(polygon_s_, decode_polygon_delay(p.polygon_delay[0], 0, PolygonDelayUnit::ten_us));
   set_jump_delay(p.jump_delay);
 }
 
@@ -143,10 +173,12 @@ std::size_t JobEncoder::add_moves(std::span<const DeviceCommand> cs, std::uint64
     current_ = first + i;
     Op op;
     std::uint16_t v;
+    bool corner = false;  // a MarkTo after a MarkTo: the board's polygon delay
     if (c.op == DeviceOp::mark && (c.speed_mm_s > 0 || pen_)) {
       op = Op::MarkTo;
       v = c.speed_mm_s > 0 ? encode_speed(c.speed_mm_s, units_, "mark speed") : pen_->mark_speed;
       if (mark_speed_ != v) [[unlikely]] send_mark_speed(v);
+      corner = in_run_;
       in_run_ = true;
     } else if (c.op == DeviceOp::jump && c.speed_mm_s > 0) {
       // A blanking line: constant speed, no jump delay, and it does not end the mark run's
@@ -177,7 +209,17 @@ std::size_t JobEncoder::add_moves(std::span<const DeviceCommand> cs, std::uint64
     }
     double t = length * inverse_speed_;
     if (op == Op::JumpTo) t += jump_delay_s_;
-    push(word(op, to[0], to[1], 0, distance_word(length)), t);
+    const std::array<std::int32_t, 2> d{std::int32_t(to[0]) - at_[0], std::int32_t(to[1]) - at_[1]};
+    double unverified = 0;
+    if (corner && polygon_worst_s_ > 0 && last_length_ > 0) [[unlikely]] {
+      // PolygonDelay × (1 − cos φ), as the board's variable polygon delay (list_executor.hpp).
+      const double cos_phi = double(d[0] * last_d_[0] + d[1] * last_d_[1]) / (length * last_length_);
+      t += polygon_s_ * (1 - cos_phi);
+      unverified = (polygon_worst_s_ - polygon_s_) * (1 - cos_phi);
+    }
+    last_d_ = d;
+    last_length_ = length;
+    push(word(op, to[0], to[1], 0, distance_word(length)), t, unverified);
     ++figures_.moves;
     at_ = to;
   }
@@ -238,7 +280,7 @@ void JobEncoder::finish(std::uint64_t commands_in_job) {
   current_ = commands_in_job;
   end_run();
   push(word(Op::EndOfList));
-  emit_packet(PacketInfo{commands_in_job, packet_estimate_s_, true});
+  emit_packet(PacketInfo{commands_in_job, packet_estimate_s_, true, packet_estimate_s_ + packet_unverified_s_});
 }
 
 }  // namespace mark::lmc

@@ -2,10 +2,16 @@
 // Device commands → LMC list commands → 3072-byte packets, with no I/O: the part of the driver
 // the encoding benchmark measures and the golden-rectangle test checks byte for byte.
 //
+// Every list starts with a preamble that sets everything its marks depend on: the first pen's
+// JumpSpeed, its source's laser words (below), MarkSpeed, LaserOnDelay, LaserOffDelay,
+// PolygonDelay and JumpDelay — all of them, whatever an earlier list set. The board keeps its
+// registers across lists and nothing documents their power-on values: a board left by EzCad, by
+// another pen or by an aborted job (whose last packet never went out) holds values of its own, so
+// the host never assumes one (as galvoplotter and meerk40t forget theirs on every new list).
+// Within a list a word is sent again only when it changes.
+//
 // What each DeviceCommand becomes (docs/lmc.md has the full table):
-// - pen i:   the pen's parameters, each only when its word differs from what the board has:
-//            JumpSpeed, FiberYLPMPulseWidth (MOPA), QSwitchPeriod, MarkCurrent, MarkSpeed,
-//            LaserOnDelay, LaserOffDelay, PolygonDelay, JumpDelay.
+// - pen i:   the pen's parameters whose words differ from what the list has set.
 // - mark:    MarkSpeed when the speed word changes, MarkTo.
 // - jump at speed 0 (travel): after a mark run the pen's mark delay as DelayTime (the board has
 //            no mark-delay register: meerk40t's "end delay"), JumpSpeed / JumpDelay back to the
@@ -21,6 +27,13 @@
 //            at 60000, the documented limit).
 // - arc:     refused (describe() says arcs = false: the job chords arcs first).
 // Moves to the point the mirrors are already at are dropped, as the reference drivers do.
+//
+// The laser words of each source (meerk40t balormk/controller.py, set_settings / power /
+// frequency / fpk; galvoplotter galvo/controller.py, set):
+// - fiber:   QSwitchPeriod (period in 50 ns = 20000 / f_kHz), MarkCurrent (12-bit power);
+// - mopa:    the same, after FiberYLPMPulseWidth (ns) when the pen sets a pulse width;
+// - co2, uv: MarkFreq (period in 100 ns = 10000 / f_kHz), SetCo2FPK (2000 / f_kHz, both words),
+//            MarkPowerRatio (the PWM's high time in 50 ns = 200 · P% / f_kHz).
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -33,26 +46,22 @@
 
 namespace mark::lmc {
 
-enum class LaserSource {
-  fiber,  // Q-switched fiber: QSwitchPeriod + MarkCurrent, master oscillator opened per job
-  mopa    // MOPA fiber: the same plus FiberYLPMPulseWidth
-};
-
 // A pen in board words, checked once at begin_job so a bad value is refused before anything
 // is sent.
 struct BoardPen {
+  LaserSource source = LaserSource::fiber;
   std::uint16_t jump_speed = 0;
   std::uint16_t mark_speed = 0;
   std::array<std::uint16_t, 2> laser_on_delay{}, laser_off_delay{}, polygon_delay{}, jump_delay{};
-  std::uint16_t qswitch_period = 0;
-  std::uint16_t power = 0;
-  std::optional<std::uint16_t> pulse_width;
+  std::uint16_t qswitch_period = 0, power = 0;  // fiber, mopa
+  std::optional<std::uint16_t> pulse_width;     // mopa, when the pen sets one
+  std::uint16_t mark_period = 0, fpk = 0, power_ratio = 0;  // co2, uv
   std::uint16_t mark_delay_10us = 0;  // DelayTime after a mark run
 };
 
-// Throws EncodeError naming the pen ("pen 2: mark speed ...").
-BoardPen encode_pen(const DevicePen& pen, std::size_t index, const FieldUnits& units,
-                    LaserSource source);
+// Throws InputError (settings the pen's source cannot take) or EncodeError (a value its word
+// cannot carry), naming the pen ("pen 2: mark speed ...").
+BoardPen encode_pen(const DevicePen& pen, std::size_t index, const FieldUnits& units);
 
 // Where a full packet goes, with what it completes: the number of DeviceCommands of the job all
 // of whose list commands are in this or an earlier packet, and the host's estimate of how long
@@ -61,6 +70,10 @@ struct PacketInfo {
   std::uint64_t commands_complete = 0;
   double estimated_s = 0;
   bool last = false;  // the packet holding the job's EndOfList
+  // The longest the board could take under every reading the references leave open: its
+  // polygon delays read in 10 µs units whatever the host sent (a µs word read so is ten times
+  // longer). What the session's deadline follows; ≥ estimated_s.
+  double allowance_s = 0;
 };
 using PacketSink = std::function<void(const ListPacket&, const PacketInfo&)>;
 
@@ -77,9 +90,9 @@ class JobEncoder {
  public:
   JobEncoder(const FieldUnits& units, PacketSink sink);
 
-  // A new list (after ResetList): anything left of an earlier list is dropped, then ReadyMark, the open-MO delay as DelayTime (0: none), the
-  // output port as WritePort(list). The board's parameters are forgotten (sent again), except
-  // the jump delay, which the board keeps and this encoder tracks across lists (see .cpp).
+  // A new list (after ResetList): anything left of an earlier list is dropped, then ReadyMark,
+  // the open-MO delay as DelayTime (0: none), the output port as WritePort(list). Every
+  // parameter is forgotten: the first pen applied sends all of them (the preamble).
   void start_list(double open_mo_delay_s, std::uint16_t port_bits);
   void apply_pen(const BoardPen& pen);
   // Appends one device command (already checked against the field by the caller). `index` is
@@ -100,10 +113,11 @@ class JobEncoder {
   bool in_mark_run() const { return in_run_; }
 
  private:
-  void push(const Word& c, double estimated_s = 0) {
+  void push(const Word& c, double estimated_s = 0, double unverified_s = 0) {
     if (packet_.full()) flush_full();
     packet_.push(c);
     packet_estimate_s_ += estimated_s;
+    packet_unverified_s_ += unverified_s;
   }
   // Hands the packet to the sink and counts it once the sink took it.
   void emit_packet(const PacketInfo& info);
@@ -112,7 +126,7 @@ class JobEncoder {
     if (jump_speed_ != w) send_jump_speed(w);
   }
   void set_jump_delay(std::array<std::uint16_t, 2> d) {
-    if (jump_delay_[0] != d[0] || jump_delay_[1] != d[1]) send_jump_delay(d);
+    if (jump_delay_ != d) send_jump_delay(d);
   }
   void send_jump_speed(std::uint16_t w);
   void send_mark_speed(std::uint16_t w);
@@ -126,6 +140,7 @@ class JobEncoder {
   PacketSink sink_;
   ListPacket packet_;
   double packet_estimate_s_ = 0;
+  double packet_unverified_s_ = 0;  // what an unverified reading could add (PacketInfo::allowance_s)
   std::uint64_t current_ = 0;  // index of the command being encoded
   EncoderFigures figures_;
   const BoardPen* pen_ = nullptr;
@@ -135,10 +150,13 @@ class JobEncoder {
   // The speed words the board has; kUnknown after a new list (sent again).
   static constexpr std::uint32_t kUnknown = 0x10000;
   std::uint32_t jump_speed_ = kUnknown, mark_speed_ = kUnknown;
-  std::optional<std::uint16_t> qswitch_, power_, pulse_width_;
-  std::optional<std::array<std::uint16_t, 2>> on_delay_, off_delay_, polygon_;
-  std::array<std::uint16_t, 2> jump_delay_{0, 0};
+  std::optional<std::uint16_t> qswitch_, power_, pulse_width_, mark_period_, fpk_, power_ratio_;
+  std::optional<std::array<std::uint16_t, 2>> on_delay_, off_delay_, polygon_, jump_delay_;
   double jump_delay_s_ = 0;            // the jump delay's share of the estimate
+  double polygon_s_ = 0;               // the polygon delay, for the estimate of corners
+  double polygon_worst_s_ = 0;         // the same word read in 10 µs units
+  std::array<std::int32_t, 2> last_d_{};  // the last move, for a corner's angle
+  double last_length_ = 0;
   std::uint32_t inverse_for_ = 0;      // speed word the cached reciprocal belongs to
   double inverse_speed_ = 0;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace mark::lmc {
 namespace {
@@ -11,8 +12,46 @@ std::uint64_t ticks_of(double seconds) {
 }
 }  // namespace
 
-ListExecutor::ListExecutor(const FieldUnits& units, int laser_bit, int red_bit)
-    : units_(units), laser_bit_(laser_bit), red_bit_(red_bit) {}
+ListExecutor::ListExecutor(const FieldUnits& units, int laser_bit, int red_bit, ExecutorBehaviour behaviour)
+    : units_(units), laser_bit_(laser_bit), red_bit_(red_bit), behaviour_(behaviour) {
+  if (behaviour_.foreign_settings) {
+    // What a board left by another program might hold (ExecutorBehaviour::foreign_settings).
+    jump_speed_ = 2000, mark_speed_ = 300;
+    on_delay_s_ = 200e-6, off_delay_s_ = 250e-6, jump_delay_s_ = 500e-6;
+    polygon_s_ = decode_polygon_delay(500, 0, units_.polygon_unit());
+    power_ = 0x800;
+    mark_period_ = 500, power_ratio_ = 500;  // 20 kHz, half the period high
+    figures_.frequency_khz = 20;
+  }
+  update_power();
+}
+
+void ListExecutor::update_power() {
+  if (limits_of(behaviour_.source).master_oscillator) {
+    light_power_ = std::min<std::uint16_t>(power_, 0xFFF) / 4095.0;
+  } else {
+    // The PWM's high time (50 ns) over its period (100 ns): the duty.
+    light_power_ = mark_period_ ? std::min(1.0, power_ratio_ / (2.0 * mark_period_)) : 0.0;
+  }
+  figures_.power_fraction = light_power_;
+}
+
+void ListExecutor::set_laser_word(const Word& w) {
+  switch (static_cast<Op>(w.opcode())) {
+    case Op::QSwitchPeriod:
+      if (w.p(1)) figures_.frequency_khz = 20000.0 / w.p(1);
+      break;
+    case Op::MarkCurrent: power_ = w.p(1); break;
+    case Op::MarkFreq:
+      mark_period_ = w.p(1);
+      if (w.p(1)) figures_.frequency_khz = 10000.0 / w.p(1);
+      break;
+    case Op::MarkPowerRatio: power_ratio_ = w.p(1); break;
+    case Op::FiberYLPMPulseWidth: figures_.pulse_width_ns = w.p(1); break;
+    default: break;  // SetCo2FPK: no effect on where the light goes or how much
+  }
+  update_power();
+}
 
 std::array<std::uint16_t, 2> ListExecutor::position() const {
   return {static_cast<std::uint16_t>(std::lround(pos_out_[0])),
@@ -23,6 +62,9 @@ void ListExecutor::start() {
   if (executing_) return;
   executing_ = true;
   finished_ = ending_ = in_underrun_ = false;
+  lit_seen_ = false;
+  figures_.lit_stream_hash = 0xcbf29ce484222325ull;  // FNV-1a offset basis
+  move_carry_ = 0;
 }
 
 void ListExecutor::stop() {
@@ -41,8 +83,9 @@ void ListExecutor::end_run() {
   off_tail_ = ticks_of(off_delay_s_);
 }
 
-void ListExecutor::hold(double seconds, bool forced_gate) {
-  const std::uint64_t n = ticks_of(seconds);
+void ListExecutor::hold(double seconds, bool forced_gate) { hold_ticks(ticks_of(seconds), forced_gate); }
+
+void ListExecutor::hold_ticks(std::uint64_t n, bool forced_gate) {
   if (n == 0) return;
   Activity a;
   a.n = n;
@@ -89,9 +132,19 @@ void ListExecutor::begin_move(const Word& w, bool mark) {
   a.move = true;
   a.from = pos_;
   a.to = to;
-  a.n = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::ceil(dist / step - 1e-9)));
-  acts_.push_back(a);
+  if (behaviour_.exact_move_time) {
+    const double t = move_carry_ + dist / step;
+    a.n = static_cast<std::uint64_t>(std::floor(t + 1e-9));
+    move_carry_ = std::max(0.0, t - double(a.n));
+  } else {
+    a.n = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::ceil(dist / step - 1e-9)));
+  }
   pos_ = to;  // where the list leaves the mirrors; the output interpolates towards it
+  if (a.n == 0) {
+    pos_out_ = to;  // less than a tick, carried: the mirrors are there by the next tick
+    return;
+  }
+  acts_.push_back(a);
 }
 
 bool ListExecutor::fetch(ListFeed& feed) {
@@ -101,9 +154,13 @@ bool ListExecutor::fetch(ListFeed& feed) {
     const Word w = *next;
     feed.pop();
     ++figures_.executed;
-    switch (static_cast<Op>(w.opcode())) {
+    const Op op = static_cast<Op>(w.opcode());
+    if (behaviour_.word_ticks && op != Op::JumpTo && op != Op::MarkTo && op != Op::EndOfList)
+      hold_ticks(1, false);
+    switch (op) {
       case Op::JumpTo:
         end_run();
+        if (behaviour_.jump_waits_off_delay) hold_ticks(off_tail_, false);  // gate open: the off delay
         begin_move(w, false);
         hold(jump_delay_s_, false);
         break;
@@ -135,14 +192,14 @@ bool ListExecutor::fetch(ListFeed& feed) {
       case Op::PolygonDelay:
         polygon_s_ = std::max(0.0, decode_polygon_delay(w.p(1), w.p(2), units_.polygon_unit()));
         break;
-      case Op::MarkCurrent: power_ = std::min<std::uint16_t>(w.p(1), 0xFFF); break;
       case Op::ListWritePort: port_ = w.p(1); break;
       case Op::FiberOpenMO: mo_ = w.p(1) != 0; break;
+      case Op::MarkCurrent:
       case Op::QSwitchPeriod:
       case Op::FiberYLPMPulseWidth:
       case Op::MarkFreq:
       case Op::MarkPowerRatio:
-      case Op::SetCo2Fpk: break;  // pulse settings: no effect on where the light goes
+      case Op::SetCo2Fpk: set_laser_word(w); break;
       default: ++figures_.unsupported; break;
     }
   }
@@ -157,7 +214,7 @@ ScanSample ListExecutor::sample(bool light) const {
   s.x_mm = static_cast<float>(std::clamp(p[0], -h, h));
   s.y_mm = static_cast<float>(std::clamp(p[1], -h, h));
   s.laser = light;
-  s.power = static_cast<std::uint8_t>(std::lround(power_ * 255.0 / 4095.0));
+  s.power = static_cast<std::uint8_t>(std::lround(light_power_ * 255.0));
   return s;
 }
 
@@ -176,22 +233,37 @@ void ListExecutor::tick(std::vector<ScanSample>& out) {
 }
 
 void ListExecutor::emit(bool gate, std::vector<ScanSample>& out) {
-  emitting_ = gate && (port_ & (1u << laser_bit_)) && enabled_ && mo_;
+  // A fiber needs its master oscillator open; CO2 and UV sources have none.
+  const bool oscillator = mo_ || !limits_of(behaviour_.source).master_oscillator;
+  emitting_ = gate && (port_ & (1u << laser_bit_)) && enabled_ && oscillator;
   ++figures_.ticks;
   if (emitting_) ++figures_.lit_ticks;
   out.push_back(sample(emitting_));
+  lit_seen_ = lit_seen_ || emitting_;
+  if (lit_seen_) {
+    const ScanSample& s = out.back();
+    std::uint8_t b[10];
+    std::memcpy(b, &s.x_mm, 4);
+    std::memcpy(b + 4, &s.y_mm, 4);
+    b[8] = s.laser, b[9] = s.power;
+    std::uint64_t h = figures_.lit_stream_hash;
+    for (std::uint8_t c : b) h = (h ^ c) * 0x100000001b3ull;
+    figures_.lit_stream_hash = h;
+  }
 }
 
-void ListExecutor::run(std::uint64_t ticks, ListFeed& feed) {
+std::uint64_t ListExecutor::run(std::uint64_t ticks, ListFeed& feed, bool stop_at_underrun) {
   if (!executing_ || paused_) {
     emitting_ = false;
-    return;
+    return 0;
   }
+  std::uint64_t ran = 0;
   std::vector<ScanSample> out;
   out.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(ticks, 1u << 16)));
-  for (std::uint64_t i = 0; i < ticks && executing_; ++i) {
+  for (; ran < ticks && executing_; ++ran) {
     if (acts_.empty() && !ending_) {
-      if (!fetch(feed)) {
+      if (!fetch(feed) && stop_at_underrun) break;
+      if (acts_.empty() && !ending_) {
         // Underrun: the mirrors hold, the gate closes (a stroke is not left burning).
         if (!in_underrun_) {
           ++figures_.underrun_events;
@@ -219,6 +291,7 @@ void ListExecutor::run(std::uint64_t ticks, ListFeed& feed) {
     tick(out);
   }
   if (scanner_ && !out.empty()) scanner_->write(out);
+  return ran;
 }
 
 }  // namespace mark::lmc

@@ -44,6 +44,7 @@ LmcDevice::LmcDevice(std::unique_ptr<LmcLink> link, LmcOptions options)
     throw DeviceError("lmc: the laser and red-pointer port bits must be two different bits 0..15");
   if (!(options_.chord_tolerance_mm > 0) || options_.chord_tolerance_mm > 1)
     throw DeviceError("lmc: chord tolerance must be in (0, 1] mm");
+  if (options_.correction) check_cor_lens(*options_.correction, options_.field_mm);
   try {
     identity_ = session_.initialise(options_.init,
                                     options_.correction ? &*options_.correction : nullptr);
@@ -92,12 +93,21 @@ void LmcDevice::begin_job(const JobHeader& header) {
   }
   if (header.pens.empty()) throw DeviceError("lmc: job '" + header.name + "' has no pen");
   std::vector<BoardPen> pens;
-  for (std::size_t i = 0; i < header.pens.size(); ++i)
-    pens.push_back(encode_pen(header.pens[i], i, units_, options_.source));  // refusals first
+  for (std::size_t i = 0; i < header.pens.size(); ++i) {
+    // One machine, one source: a pen for another source would send words the laser does not
+    // understand (a CO2 power ratio to a fiber's driver).
+    if (header.pens[i].laser.source != header.pens[0].laser.source)
+      throw DeviceError("lmc: job '" + header.name + "': pen " + std::to_string(i) + " is for a " +
+                        std::string(to_string(header.pens[i].laser.source)) + " source, pen 0 for " +
+                        std::string(to_string(header.pens[0].laser.source)) +
+                        "; a board drives one source");
+    pens.push_back(encode_pen(header.pens[i], i, units_));  // refusals first
+  }
 
   header_ = header;
   header_.lit_paths.clear();  // not needed here; do not keep a copy of the geometry
   pens_ = std::move(pens);
+  source_ = header.pens[0].laser.source;
   commands_ = commands_sent_ = 0;
   packets_ = 0;
   list_commands_at_start_ = encoder_.figures().list_commands;
@@ -110,15 +120,21 @@ void LmcDevice::begin_job(const JobHeader& header) {
   device_time_s_ = 0;
   job_start_ = Clock::now();
   lifecycle_.begin("begin_job");
+  {
+    std::lock_guard lock(report_mutex_);
+    last_stop_.reset();
+  }
   try {
-    // As meerk40t's program mode: a fresh list, the laser enable bit, the master oscillator
-    // open, then ReadyMark, the open-MO delay, the port in the list, and the first pen.
+    // As meerk40t's program mode: a fresh list, the laser enable bit, a fiber's master
+    // oscillator open, then ReadyMark, its open-MO delay, the port in the list, and the first
+    // pen (the preamble: every setting, job_encoder.hpp).
+    const bool mo = limits_of(source_).master_oscillator;
     session_.command(word(Op::ResetList));
     session_.command(word(Op::WritePort, port_bits(true, false)));
-    session_.command(word(Op::FiberSetMo, 1));
+    if (mo) session_.command(word(Op::FiberSetMo, 1));
     laser_on_ = true;
     session_.begin_list();
-    encoder_.start_list(options_.open_mo_delay_s, port_bits(true, false));
+    encoder_.start_list(mo ? options_.open_mo_delay_s : 0, port_bits(true, false));
     encoder_.apply_pen(pens_[0]);
   } catch (const Aborted&) {
     return;
@@ -201,7 +217,7 @@ void LmcDevice::submit(std::span<const DeviceCommand> commands) {
 }
 
 void LmcDevice::send_packet(const ListPacket& packet, const PacketInfo& info) {
-  session_.send_packet(packet, info.estimated_s);
+  session_.send_packet(packet, info.estimated_s, info.allowance_s);
   commands_sent_ = info.commands_complete;
   if (packets_ == 0) first_packet_s_ = seconds(Clock::now() - job_start_);
   ++packets_;
@@ -256,11 +272,24 @@ void LmcDevice::collect_figures() {
       {"status_polls", double(s.status_polls - session_at_start_.status_polls)},
       {"ready_waits", double(s.ready_waits - session_at_start_.ready_waits)},
       {"ready_wait_s", s.ready_wait_s - session_at_start_.ready_wait_s},
+      {"idle_wait_s", s.idle_wait_s - session_at_start_.idle_wait_s},
       {"estimated_time_s", e.estimated_s - estimate_at_start_s_},
   };
+  f.emplace_back("lens_mm", options_.field_mm);
+  if (options_.correction) f.emplace_back("cor_lens_mm", options_.correction->lens_mm());
   if (first_packet_s_ >= 0) f.emplace_back("first_packet_s", first_packet_s_);
   if (fault_latency_s_ >= 0) f.emplace_back("fault_latency_s", fault_latency_s_);
+  const DeviceState state = lifecycle_.state();
   std::lock_guard lock(report_mutex_);
+  if (last_stop_ && state != DeviceState::done) {
+    // How the job's stop went: 1 when StopExecute and Fiber_SetMo(0) were acknowledged, and how
+    // many of its commands were not (the fault message names them).
+    double unacknowledged = 0;
+    for (const StopStep& st : last_stop_->steps)
+      unacknowledged += st.result != StopStep::Result::acknowledged && st.result != StopStep::Result::skipped;
+    f.emplace_back("stop_confirmed", last_stop_->stopped ? 1 : 0);
+    f.emplace_back("stop_unacknowledged", unacknowledged);
+  }
   figures_ = std::move(f);
 }
 
@@ -302,15 +331,20 @@ void LmcDevice::fail(FaultCategory category, const std::string& what) {
 
 std::string LmcDevice::stop_board() noexcept {
   try {
-    const StopOutcome o = session_.stop(port_bits(false, false), true);
+    StopOutcome o = session_.stop(port_bits(false, false));
     if (o.laser_off_confirmed) laser_on_ = false;
-    return o.laser_off_confirmed
-               ? "laser port off (confirmed by the board)"
-               : "the board could not be reached to switch the laser off" +
-                     (o.note.empty() ? std::string() : " (" + o.note + ")");
+    std::string summary = o.summary();
+    std::lock_guard lock(report_mutex_);
+    last_stop_ = std::move(o);
+    return summary;
   } catch (...) {
     return "the stop sequence failed";
   }
+}
+
+StopOutcome LmcDevice::last_stop() const {
+  std::lock_guard lock(report_mutex_);
+  return last_stop_.value_or(StopOutcome{});
 }
 
 void LmcDevice::abort() noexcept {

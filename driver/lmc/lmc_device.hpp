@@ -41,9 +41,10 @@ namespace mark::lmc {
 struct LmcOptions {
   double field_mm = 110;               // lens field (square), sets the units: 65535 / field
   double chord_tolerance_mm = 0.005;   // what describe() asks the job to chord arcs to
-  AxisMap axes;                        // how the head is wired
-  LaserSource source = LaserSource::fiber;
-  PolygonDelayUnit polygon_delay_unit = PolygonDelayUnit::ten_us;
+  AxisMap axes = kEzCadAxes;           // how the head is wired (EzCad's default)
+  // µs with the sign flag, as galvoplotter and balor send it (meerk40t since 2025: 10 µs);
+  // `marker lmc probe` measures which one a board takes.
+  PolygonDelayUnit polygon_delay_unit = PolygonDelayUnit::signed_us;
   int laser_port_bit = 0;              // output port bit that enables the laser
   int red_pointer_bit = 8;             // output port bit of the red pointer
   double open_mo_delay_s = 0.008;      // DelayTime after opening the master oscillator
@@ -82,6 +83,8 @@ class LmcDevice : public CommandDevice {
 
   // LMC specifics.
   const BoardIdentity& identity() const { return identity_; }
+  // What the last stop sequence (abort, or a fault) achieved, command by command.
+  StopOutcome last_stop() const;
   const LmcOptions& options() const { return options_; }
   void pause();   // StopList: the board holds with the laser off
   void resume();  // RestartList
@@ -118,6 +121,7 @@ class LmcDevice : public CommandDevice {
   // The job.
   JobHeader header_;
   std::vector<BoardPen> pens_;
+  LaserSource source_ = LaserSource::fiber;  // the job's (every pen's) source
   std::uint64_t commands_ = 0;            // DeviceCommands submitted
   std::atomic<std::uint64_t> commands_sent_{0};  // all of whose list commands reached the board
   std::uint64_t packets_ = 0;
@@ -130,6 +134,7 @@ class LmcDevice : public CommandDevice {
   double first_packet_s_ = -1;            // begin_job → first list packet on the wire
   double device_time_s_ = 0;
   std::atomic<bool> laser_on_{false};     // the board's laser port as last set
+  std::optional<StopOutcome> last_stop_;  // guarded by report_mutex_
   Vec2 position_{0, 0};
 };
 

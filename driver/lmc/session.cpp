@@ -74,7 +74,7 @@ BoardIdentity Session::initialise(const InitParams& p, const CorrectionTable* ta
   // enable bit (or the red pointer) set; every output starts off.
   command(word(Op::WritePort, 0));
   upload_correction(table);
-  command(word(Op::EnableLaser));
+  if (p.enable_laser) command(word(Op::EnableLaser));
   command(word(Op::SetControlMode, p.control_mode));
   command(word(Op::SetLaserMode, p.laser_mode));
   command(word(Op::SetDelayMode, p.delay_mode));
@@ -112,7 +112,9 @@ void Session::upload_correction(const CorrectionTable* table) {
 void Session::begin_list() {
   packets_in_list_ = 0;
   executed_ = false;
-  queued_s_ = 0;
+  queued_s_ = allowed_s_ = 0;
+  std::lock_guard lock(pause_mutex_);
+  paused_ = false;
   paused_s_ = 0;
 }
 
@@ -126,44 +128,52 @@ void Session::write_packet(const ListPacket& packet, bool stopping) {
   transact(word(Op::SetEndOfList, 0), stopping);
 }
 
-// Polls the status until `done` holds for it. The board can never take longer than the work
-// queued on it, so the deadline is what is left of that estimate since ExecuteList (time
-// paused not counted) plus the grace period. Returns the seconds waited, 0 if the first poll
-// was enough; throws BoardTimeout saying what it waited for.
+double Session::paused_total_s() const {
+  std::lock_guard lock(pause_mutex_);
+  return paused_s_ + (paused_ ? seconds_since(paused_at_) : 0.0);
+}
+
+double Session::running_s() const {
+  if (!executed_) return 0;
+  return std::max(0.0, seconds_since(execute_start_) - paused_total_s());
+}
+
+// Polls the status until `done` holds for it; see the top of session.hpp for when it gives up.
+// Returns the seconds waited, 0 if the first poll was enough; throws BoardTimeout saying what
+// it waited for, how long the board has run and what it was given.
 template <class Done>
-double Session::poll_until(Done done, const std::string& waiting_for) {
+double Session::poll_until(Done done, const char* waiting_for) {
   const auto t0 = Clock::now();
-  auto last = t0;
-  double paused_here = 0;
   for (bool first = true;; first = false) {
-    if (done(poll_locked())) {
-      paused_s_ += paused_here;
-      return first ? 0 : seconds_since(t0);
+    const std::uint16_t status = poll_locked();
+    if (done(status)) return first ? 0 : seconds_since(t0);
+    if (!executed_) {
+      // Not READY and nothing running: the board's buffer filled before the packet that
+      // starts the list. Start it, or READY never comes back.
+      if ((status & status::ready) == 0) finish_list();
+      sleep_poll();
+      continue;
     }
-    const auto now = Clock::now();
-    if (paused_.load()) paused_here += std::chrono::duration<double>(now - last).count();
-    last = now;
-    double remaining = queued_s_;
-    if (executed_)
-      remaining -= std::chrono::duration<double>(now - execute_start_).count() - paused_s_ - paused_here;
-    remaining = std::max(0.0, remaining);
-    const double waited = std::chrono::duration<double>(now - t0).count();
-    if (waited - paused_here > remaining + options_.grace_s) {
-      char buf[240];
+    const double ran = running_s();
+    const double allowed = (1 + options_.estimate_margin) * allowed_s_ + options_.grace_s;
+    if (ran > allowed) {
+      char buf[360];
       std::snprintf(buf, sizeof buf,
-                    "lmc: the board did not %s within %.2f s (its queued work was estimated at "
-                    "%.2f s)",
-                    waiting_for.c_str(), waited, remaining);
+                    "lmc: the board did not %s: it has run its list for %.2f s since ExecuteList "
+                    "(time paused not counted), and what it was sent was estimated at %.2f s, at "
+                    "most %.2f s (allowed %.2f s: %.0f %% more, and %.1f s); it answers but is not "
+                    "getting through the list",
+                    waiting_for, ran, queued_s_, allowed_s_, allowed, 100 * options_.estimate_margin,
+                    options_.grace_s);
       throw BoardTimeout(buf);
     }
     sleep_poll();
   }
 }
 
-void Session::send_packet(const ListPacket& packet, double estimated_s) {
+void Session::send_packet(const ListPacket& packet, double estimated_s, double allowance_s) {
   const double waited = poll_until([](std::uint16_t s) { return (s & status::ready) != 0; },
-                                   "become READY for list packet " +
-                                       std::to_string(packets_in_list_ + 1));
+                                   "become READY for the next list packet");
   if (waited > 0) {
     std::lock_guard lock(wire_);
     ++figures_.ready_waits;
@@ -172,6 +182,7 @@ void Session::send_packet(const ListPacket& packet, double estimated_s) {
   write_packet(packet, false);
   ++packets_in_list_;
   queued_s_ += estimated_s;
+  allowed_s_ += std::max(estimated_s, allowance_s);
   if (!executed_ && packets_in_list_ >= options_.execute_after_packets) finish_list();
 }
 
@@ -180,11 +191,20 @@ void Session::finish_list() {
   command(word(Op::ExecuteList));
   executed_ = true;
   execute_start_ = Clock::now();
+  {
+    std::lock_guard lock(pause_mutex_);
+    paused_s_ = 0;
+    if (paused_) paused_at_ = execute_start_;
+  }
+  std::lock_guard lock(wire_);
   if (!figures_.execute_at) figures_.execute_at = execute_start_;
 }
 
 void Session::wait_idle() {
-  poll_until([](std::uint16_t s) { return (s & status::busy) == 0; }, "finish its list (still BUSY)");
+  const double waited =
+      poll_until([](std::uint16_t s) { return (s & status::busy) == 0; }, "finish its list (still BUSY)");
+  std::lock_guard lock(wire_);
+  figures_.idle_wait_s += waited;
 }
 
 SessionFigures Session::figures() {
@@ -193,64 +213,155 @@ SessionFigures Session::figures() {
 }
 
 void Session::pause() {
-  paused_ = true;
+  {
+    std::lock_guard lock(pause_mutex_);
+    if (!paused_) paused_at_ = Clock::now();
+    paused_ = true;
+  }
   command(word(Op::StopList));
 }
 
 void Session::resume() {
   command(word(Op::RestartList));
+  std::lock_guard lock(pause_mutex_);
+  if (paused_) paused_s_ += seconds_since(paused_at_);
   paused_ = false;
 }
 
-StopOutcome Session::stop(std::uint16_t port_off, bool fiber) noexcept {
+std::string_view to_string(StopStep::Result result) {
+  switch (result) {
+    case StopStep::Result::acknowledged: return "acknowledged";
+    case StopStep::Result::unanswered: return "written, no answer";
+    case StopStep::Result::not_written: return "not written";
+    case StopStep::Result::unreachable: return "not tried, the board is gone";
+    case StopStep::Result::skipped: return "skipped";
+  }
+  return "?";
+}
+
+std::string StopOutcome::summary() const {
+  std::string acked, missing;
+  for (const StopStep& s : steps) {
+    if (s.result == StopStep::Result::acknowledged) {
+      acked += (acked.empty() ? "" : ", ") + s.command;
+    } else if (s.result != StopStep::Result::skipped) {
+      missing += (missing.empty() ? "" : "; ") + s.command + " " + std::string(to_string(s.result)) +
+                 (s.why.empty() ? "" : " (" + s.why + ")");
+    }
+  }
+  std::string out = stopped ? "stopped" : "NOT confirmed stopped";
+  if (!stopped)
+    out += " (StopExecute and Fiber_SetMo(0) must both be acknowledged)";
+  out += laser_off_confirmed ? ", laser port off confirmed" : ", laser port off NOT confirmed";
+  if (!acked.empty()) out += "; acknowledged: " + acked;
+  if (!missing.empty()) out += "; " + missing;
+  if (!reached) out += "; the board could not be reached";
+  return out;
+}
+
+StopOutcome Session::stop(std::uint16_t port_off) noexcept {
   StopOutcome out;
-  std::lock_guard lock(wire_);
-  // One step: on a stall clear the halt and retry once; any other failure ends the sequence.
-  const auto step = [&](const Word& c) -> bool {
-    for (int attempt = 0; attempt < 2; ++attempt) {
-      try {
-        transact(c, true);
-        out.reached = true;
-        return true;
-      } catch (const LinkError& e) {
-        if (e.failure() == LinkFailure::stall && attempt == 0) {
-          try {
-            link_.clear_halt();
-            continue;
-          } catch (const std::exception& e2) {
-            out.note = e2.what();
-            return false;
+  try {
+    std::lock_guard lock(wire_);
+    bool gone = false;
+    int unwritten = 0;  // commands in a row whose write failed
+    Reply last;  // the answer to the last acknowledged command
+    // One command: written whatever came before; a stall is cleared and the command written
+    // once more; a vanished board ends what can be tried.
+    const auto step = [&](const Word& c, std::string name, bool last_chance = false) -> StopStep& {
+      StopStep& st = out.steps.emplace_back();
+      st.command = std::move(name);
+      if (gone) return st;  // unreachable
+      if (unwritten >= 2 && !last_chance) {
+        // Two writes in a row took the link's whole timeout and went nowhere: the board takes
+        // nothing now. Only the closing WritePort is still tried.
+        st.result = StopStep::Result::not_written;
+        st.why = "not tried: the two commands before it could not be written";
+        return st;
+      }
+      for (int attempt = 0; attempt < 2; ++attempt) {
+        bool written = false;
+        try {
+          link_.write(bytes(c));
+          written = true;
+          ++figures_.single_commands;
+          figures_.last_ok = Clock::now();
+          const CommandSpec* spec = find_command(c.opcode());
+          if (spec && spec->reply) last = decode_reply(link_.read());
+          figures_.last_ok = Clock::now();
+          st.result = StopStep::Result::acknowledged;
+          st.why.clear();
+          out.reached = true;
+          unwritten = 0;
+          return st;
+        } catch (const LinkError& e) {
+          st.why = e.what();
+          st.result = written ? StopStep::Result::unanswered : StopStep::Result::not_written;
+          unwritten = written ? 0 : unwritten + 1;
+          if (e.failure() == LinkFailure::no_device) {
+            gone = true;
+            return st;
           }
+          if (e.failure() == LinkFailure::stall && attempt == 0) {
+            try {
+              link_.clear_halt();
+              continue;
+            } catch (const std::exception& e2) {
+              st.why += std::string("; clearing the stall failed: ") + e2.what();
+            }
+          }
+          return st;
+        } catch (const std::exception& e) {
+          st.why = e.what();
+          st.result = written ? StopStep::Result::unanswered : StopStep::Result::not_written;
+          return st;
         }
-        out.note = e.what();
-        return false;
+      }
+      return st;
+    };
+    char port[32];
+    std::snprintf(port, sizeof port, "WritePort(0x%04X)", port_off);
+    out.laser_off_confirmed = step(word(Op::WritePort, port_off), port).result == StopStep::Result::acknowledged;
+    const bool executed_stopped = step(word(Op::StopExecute), "StopExecute").result == StopStep::Result::acknowledged;
+    {
+      std::lock_guard pause_lock(pause_mutex_);
+      paused_ = false;
+    }
+    const bool mo_closed = step(word(Op::FiberSetMo, 0), "Fiber_SetMo(0)").result == StopStep::Result::acknowledged;
+    step(word(Op::ResetList), "ResetList");
+    // Flush, as meerk40t does after a stop: an empty list, started at once. Only when the board
+    // has room — a stop never waits for READY.
+    const bool ready = step(word(Op::GetVersion), "GetVersion (READY for the flush list?)").result ==
+                           StopStep::Result::acknowledged &&
+                       last.ready();
+    StopStep& flush = out.steps.emplace_back();
+    flush.command = "flush list (EndOfList, ExecuteList)";
+    if (gone) {
+      flush.result = StopStep::Result::unreachable;
+    } else if (!ready) {
+      flush.result = StopStep::Result::skipped;
+    } else {
+      try {
+        ListPacket empty;
+        empty.push(word(Op::EndOfList));
+        write_packet(empty, true);
+        transact(word(Op::ExecuteList), true);
+        flush.result = StopStep::Result::acknowledged;
+      } catch (const LinkError& e) {
+        flush.result = StopStep::Result::not_written;
+        flush.why = e.what();
+        if (e.failure() == LinkFailure::no_device) gone = true;
       } catch (const std::exception& e) {
-        out.note = e.what();
-        return false;
+        flush.result = StopStep::Result::not_written;
+        flush.why = e.what();
       }
     }
-    return false;
-  };
-  if (!step(word(Op::WritePort, port_off))) return out;
-  out.laser_off_confirmed = true;
-  if (!step(word(Op::StopExecute))) return out;
-  paused_ = false;
-  if (fiber && !step(word(Op::FiberSetMo, 0))) return out;
-  if (!step(word(Op::ResetList))) return out;
-  // Flush, as meerk40t does after a stop: an empty list, started at once. Only when the board
-  // has room — a stop must never wait for READY.
-  try {
-    if (transact(word(Op::GetVersion), true).ready()) {
-      ListPacket flush;
-      flush.push(word(Op::EndOfList));
-      write_packet(flush, true);
-      transact(word(Op::ExecuteList), true);
-    }
-  } catch (const std::exception& e) {
-    out.note = e.what();
-    return out;
+    if (step(word(Op::WritePort, port_off), port, true).result == StopStep::Result::acknowledged)
+      out.laser_off_confirmed = true;
+    out.stopped = executed_stopped && mo_closed;
+  } catch (...) {
+    // Only allocation can throw here; what was recorded stands.
   }
-  step(word(Op::WritePort, port_off));
   return out;
 }
 

@@ -24,7 +24,7 @@ void append_bytes(png_structp png, png_bytep data, png_size_t length) {
 void flush_nothing(png_structp) {}
 
 // The encoding itself, kept free of C++ objects with destructors: longjmp must not skip them.
-bool encode(std::string* out, const CameraImage& img, std::string* error) {
+bool encode(std::string* out, const GreyImage& img, std::string* error) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, error, on_png_error, on_png_warning);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
@@ -52,7 +52,7 @@ unsigned pixels_per_metre(double pixel_mm) {
   return static_cast<unsigned>(std::lround(1000.0 / pixel_mm));
 }
 
-std::string encode_grey_png(const CameraImage& img) {
+std::string encode_grey_png(const GreyImage& img) {
   if (img.width <= 0 || img.height <= 0 || img.grey.size() != static_cast<std::size_t>(img.width) * img.height)
     fail("the image is empty");
   if (!(img.pixel_mm > 0)) fail("the pixel size is not positive");

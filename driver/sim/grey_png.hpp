@@ -5,7 +5,7 @@
 // bytes; the command line writes them whole (marker/output/output_file.hpp).
 #include <string>
 
-#include "driver/sim/part_image.hpp"
+#include "base/grey_image.hpp"
 
 namespace mark {
 
@@ -13,6 +13,6 @@ namespace mark {
 unsigned pixels_per_metre(double pixel_mm);
 
 // Throws std::runtime_error when the image is empty or has no pixel size.
-std::string encode_grey_png(const CameraImage& image);
+std::string encode_grey_png(const GreyImage& image);
 
 }  // namespace mark

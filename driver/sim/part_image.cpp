@@ -25,12 +25,42 @@ std::vector<float> kernel(double w_mm, double pixel_mm) {
 // Raster rows per strip: memory stays a few megabytes however wide the window.
 constexpr std::int64_t kStripRows = 256;
 
+// A normally distributed number (unit variance, Irwin–Hall of four uniforms) fixed by the raster
+// pixel and the seed: the surface's grain belongs to the part, not to the window looked at.
+float grain_at(std::int64_t gx, std::int64_t gy, std::uint32_t seed) {
+  std::uint64_t z = static_cast<std::uint64_t>(gx) * 0x9E3779B97F4A7C15ull ^
+                    static_cast<std::uint64_t>(gy) * 0xC2B2AE3D27D4EB4Full ^ (std::uint64_t{seed} << 32);
+  z ^= z >> 30, z *= 0xBF58476D1CE4E5B9ull, z ^= z >> 27, z *= 0x94D049BB133111EBull, z ^= z >> 31;
+  float sum = 0;
+  for (int k = 0; k < 4; ++k) sum += static_cast<float>((z >> (16 * k)) & 0xFFFF) / 65536.0f;
+  return (sum - 2.0f) * 1.7320508f;
+}
+
+void require(const char* what, double v, double lo, double hi) {
+  if (std::isfinite(v) && v >= lo && v <= hi) return;
+  throw std::invalid_argument(std::string("part look: ") + what + " " + std::to_string(v) + " is outside " +
+                              std::to_string(lo) + " .. " + std::to_string(hi));
+}
+
 }  // namespace
 
+void check_part_look(const PartLook& l) {
+  require("bare reflectance", l.bare_reflectance, 0.001, 1);
+  require("mark reflectance", l.mark_reflectance, 0.001, 1);
+  require("tone ratio", l.tone_ratio, 1.01, 1000);
+  require("grain (%)", l.grain_pct, 0, 50);
+}
+
+PartLook dark_part_look(PartLook look) {
+  std::swap(look.bare_reflectance, look.mark_reflectance);
+  return look;
+}
+
 PartImage PartImage::render(const DoseRaster& dose, const FieldWindow& w, const MarkResponse& response,
-                            int factor, std::int64_t max_pixels) {
+                            int factor, const PartLook& look, std::int64_t max_pixels) {
   if (factor < 1) throw std::invalid_argument("part image: pixel factor must be at least 1");
   if (!(w.x1 > w.x0 && w.y1 > w.y0)) throw std::invalid_argument("part image: empty window");
+  check_part_look(look);
   PartImage img;
   const double p = dose.pixel_mm();
   img.pixel_mm_ = p * factor;
@@ -48,8 +78,14 @@ PartImage PartImage::render(const DoseRaster& dose, const FieldWindow& w, const 
   img.x0_ = (static_cast<double>(ix0) + 0.5 * (factor - 1)) * p;
   img.y0_ = (static_cast<double>(iy0) + 0.5 * (factor - 1)) * p;
   img.share_.assign(static_cast<std::size_t>(nx * ny), 0.0f);
+  img.reflectance_.assign(static_cast<std::size_t>(nx * ny), 0.0f);
 
   const float threshold = static_cast<float>(response.threshold_s_mm2());
+  // Darkness d = ½ + ½·ln(F/F_th)/ln(tone), clamped to 0..1: nothing below F_th/tone.
+  const float faint = threshold / static_cast<float>(look.tone_ratio);
+  const float inv_log_tone = static_cast<float>(0.5 / std::log(look.tone_ratio));
+  const float bare = static_cast<float>(look.bare_reflectance), dark = static_cast<float>(look.mark_reflectance);
+  const float grain = static_cast<float>(look.grain_pct / 100);
   const std::vector<float> k = kernel(response.beam_radius_mm(), p);
   const std::int64_t reach = static_cast<std::int64_t>(k.size() / 2);
   const std::int64_t fine_w = nx * factor;               // raster columns the image covers
@@ -57,39 +93,59 @@ PartImage PartImage::render(const DoseRaster& dose, const FieldWindow& w, const 
   const std::int64_t strip = std::max<std::int64_t>(1, kStripRows / factor) * factor;
   std::vector<float> mass, rows, line(static_cast<std::size_t>(fine_w));
   std::vector<std::uint16_t> count(static_cast<std::size_t>(nx));
+  std::vector<float> light(static_cast<std::size_t>(nx));
+  const float per_pixel = 1.0f / static_cast<float>(factor * factor);
   for (std::int64_t r0 = 0; r0 < ny * factor; r0 += strip) {
     const std::int64_t r1 = std::min(ny * factor, r0 + strip);
     const std::int64_t in_h = (r1 - r0) + 2 * reach;
     mass.resize(static_cast<std::size_t>(in_w * in_h));
-    if (!dose.copy_rect(ix0 - reach, iy0 + r0 - reach, in_w, in_h, mass.data())) continue;
-    // Along x: each input row spread over the image's columns.
-    rows.assign(static_cast<std::size_t>(fine_w * in_h), 0.0f);
-    for (std::int64_t y = 0; y < in_h; ++y) {
-      const float* in = &mass[static_cast<std::size_t>(y * in_w)];
-      float* out = &rows[static_cast<std::size_t>(y * fine_w)];
-      for (std::int64_t x = 0; x < in_w; ++x) {
-        if (in[x] == 0) continue;
-        for (std::int64_t d = -reach; d <= reach; ++d) {
-          const std::int64_t o = x - reach + d;
-          if (o >= 0 && o < fine_w) out[o] += in[x] * k[static_cast<std::size_t>(d + reach)];
+    const bool dosed = dose.copy_rect(ix0 - reach, iy0 + r0 - reach, in_w, in_h, mass.data());
+    if (dosed) {
+      // Along x: each input row spread over the image's columns.
+      rows.assign(static_cast<std::size_t>(fine_w * in_h), 0.0f);
+      for (std::int64_t y = 0; y < in_h; ++y) {
+        const float* in = &mass[static_cast<std::size_t>(y * in_w)];
+        float* out = &rows[static_cast<std::size_t>(y * fine_w)];
+        for (std::int64_t x = 0; x < in_w; ++x) {
+          if (in[x] == 0) continue;
+          for (std::int64_t d = -reach; d <= reach; ++d) {
+            const std::int64_t o = x - reach + d;
+            if (o >= 0 && o < fine_w) out[o] += in[x] * k[static_cast<std::size_t>(d + reach)];
+          }
         }
       }
     }
-    // Along y, one output row at a time; threshold; count into the image's pixels.
+    // Along y, one output row at a time; threshold and darkness; count into the image's pixels.
     for (std::int64_t r = r0; r < r1; ++r) {
       std::fill(line.begin(), line.end(), 0.0f);
-      const std::int64_t centre = r - r0 + reach;
-      for (std::int64_t d = -reach; d <= reach; ++d) {
-        const float kd = k[static_cast<std::size_t>(d + reach)];
-        const float* in = &rows[static_cast<std::size_t>((centre + d) * fine_w)];
-        for (std::int64_t x = 0; x < fine_w; ++x) line[static_cast<std::size_t>(x)] += in[x] * kd;
+      if (dosed) {
+        const std::int64_t centre = r - r0 + reach;
+        for (std::int64_t d = -reach; d <= reach; ++d) {
+          const float kd = k[static_cast<std::size_t>(d + reach)];
+          const float* in = &rows[static_cast<std::size_t>((centre + d) * fine_w)];
+          for (std::int64_t x = 0; x < fine_w; ++x) line[static_cast<std::size_t>(x)] += in[x] * kd;
+        }
       }
-      if ((r % factor) == 0) std::fill(count.begin(), count.end(), 0);
-      for (std::int64_t x = 0; x < fine_w; ++x) count[static_cast<std::size_t>(x / factor)] += line[static_cast<std::size_t>(x)] >= threshold;
+      if ((r % factor) == 0) {
+        std::fill(count.begin(), count.end(), 0);
+        std::fill(light.begin(), light.end(), 0.0f);
+      }
+      const std::int64_t gy = iy0 + r;
+      for (std::int64_t x = 0; x < fine_w; ++x) {
+        const float f = line[static_cast<std::size_t>(x)];
+        float d = 0;
+        if (f > faint) d = std::clamp(0.5f + inv_log_tone * std::log(f / threshold), 0.0f, 1.0f);
+        const float refl = (bare + (dark - bare) * d) * (1.0f + grain * grain_at(ix0 + x, gy, look.seed));
+        const auto i = static_cast<std::size_t>(x / factor);
+        count[i] += f >= threshold;
+        light[i] += std::max(0.0f, refl);
+      }
       if ((r % factor) == factor - 1) {
-        float* out = &img.share_[static_cast<std::size_t>((r / factor) * nx)];
-        for (std::int64_t i = 0; i < nx; ++i)
-          out[i] = static_cast<float>(count[static_cast<std::size_t>(i)]) / static_cast<float>(factor * factor);
+        const std::size_t row = static_cast<std::size_t>((r / factor) * nx);
+        for (std::int64_t i = 0; i < nx; ++i) {
+          img.share_[row + i] = static_cast<float>(count[static_cast<std::size_t>(i)]) * per_pixel;
+          img.reflectance_[row + i] = light[static_cast<std::size_t>(i)] * per_pixel;
+        }
       }
     }
   }
@@ -102,35 +158,72 @@ float PartImage::share_at(double x, double y) const {
   return i >= 0 && j >= 0 && i < width_ && j < height_ ? share_[index(i, j)] : 0.0f;
 }
 
-CameraImage camera_view(const PartImage& part, int factor, bool invert) {
-  factor = std::max(1, factor);
-  CameraImage cam;
-  cam.width = (part.width() + factor - 1) / factor;
-  cam.height = (part.height() + factor - 1) / factor;
-  cam.pixel_mm = part.pixel_mm() * factor;
-  cam.grey.resize(static_cast<std::size_t>(cam.width) * cam.height);
-  const double bare = invert ? kMarkedGrey : kBareGrey, marked = invert ? kBareGrey : kMarkedGrey;
-  for (int y = 0; y < cam.height; ++y)
-    for (int x = 0; x < cam.width; ++x) {
-      // Camera row y (top down) covers part rows from the top of the window.
-      const int j_top = part.height() - 1 - y * factor;
+PartImage PartImage::binned(int k) const {
+  if (k <= 1) return *this;
+  PartImage out;
+  out.pixel_mm_ = pixel_mm_ * k;
+  out.width_ = (width_ + k - 1) / k;
+  out.height_ = (height_ + k - 1) / k;
+  // Coarse pixel (i, j) covers fine pixels i·k … i·k + k − 1: its centre is their middle.
+  out.x0_ = x0_ + 0.5 * (k - 1) * pixel_mm_;
+  out.y0_ = y0_ + 0.5 * (k - 1) * pixel_mm_;
+  out.share_.assign(static_cast<std::size_t>(out.width_) * out.height_, 0.0f);
+  out.reflectance_.assign(out.share_.size(), 0.0f);
+  for (int j = 0; j < out.height_; ++j)
+    for (int i = 0; i < out.width_; ++i) {
+      float share = 0, light = 0;
       int n = 0;
-      double on = 0;
-      for (int b = 0; b < factor && j_top - b >= 0; ++b)
-        for (int a = 0; a < factor && x * factor + a < part.width(); ++a)
-          ++n, on += part.share(x * factor + a, j_top - b);
-      const double share = n ? on / n : 0.0;
-      cam.grey[static_cast<std::size_t>(y) * cam.width + x] =
-          static_cast<std::uint8_t>(std::lround(bare + (marked - bare) * share));
+      for (int b = 0; b < k && j * k + b < height_; ++b)
+        for (int a = 0; a < k && i * k + a < width_; ++a, ++n) {
+          share += share_[index(i * k + a, j * k + b)];
+          light += reflectance_[index(i * k + a, j * k + b)];
+        }
+      out.share_[out.index(i, j)] = share / static_cast<float>(n);
+      out.reflectance_[out.index(i, j)] = light / static_cast<float>(n);
     }
-  return cam;
+  return out;
 }
 
-CameraImage part_picture(const DoseRaster& dose, const FieldWindow& w, const MarkResponse& response,
-                         bool dark_part, int max_side_px) {
+namespace {
+
+// An empty picture of the part's window, row 0 at the top.
+GreyImage blank_view(const PartImage& part) {
+  GreyImage img;
+  img.width = part.width();
+  img.height = part.height();
+  img.pixel_mm = part.pixel_mm();
+  img.x0_mm = part.x0_mm();
+  img.top_mm = part.y0_mm() + (part.height() - 1) * part.pixel_mm();
+  img.grey.resize(static_cast<std::size_t>(img.width) * img.height);
+  return img;
+}
+
+}  // namespace
+
+GreyImage part_view(const PartImage& part, const PartLook& look) {
+  GreyImage img = blank_view(part);
+  const double scale = 255 / std::max(look.bare_reflectance, look.mark_reflectance);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      img.grey[static_cast<std::size_t>(y) * img.width + x] = static_cast<std::uint8_t>(
+          std::lround(std::clamp(part.reflectance(x, part.height() - 1 - y) * scale, 0.0, 255.0)));
+  return img;
+}
+
+GreyImage marked_share_view(const PartImage& part) {
+  GreyImage img = blank_view(part);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      img.grey[static_cast<std::size_t>(y) * img.width + x] =
+          static_cast<std::uint8_t>(std::lround(255 * part.share(x, part.height() - 1 - y)));
+  return img;
+}
+
+GreyImage part_picture(const DoseRaster& dose, const FieldWindow& w, const MarkResponse& response,
+                       const PartLook& look, int max_side_px) {
   const double side_px = std::max(w.x1 - w.x0, w.y1 - w.y0) / dose.pixel_mm() + 1;
   const int factor = std::max(1, static_cast<int>(std::ceil(side_px / std::max(16, max_side_px - 1))));
-  return camera_view(PartImage::render(dose, w, response, factor), 1, dark_part);
+  return part_view(PartImage::render(dose, w, response, factor, look), look);
 }
 
 bool dosed_window(const DoseRaster& dose, double margin_mm, FieldWindow& w) {

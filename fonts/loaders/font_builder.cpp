@@ -9,12 +9,10 @@
 #include "fonts/error.hpp"
 #include "fonts/loaders/strokes.hpp"
 #include "fonts/overloaded.hpp"
+#include "fonts/stroke_join.hpp"
 
 namespace mark::loaders {
 namespace {
-
-// Coincidence tolerance relative to the size of the font's drawing.
-constexpr double kRelativeJoinTolerance = 1e-9;
 
 bool finite(const Point& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
 
@@ -77,8 +75,11 @@ StrokeFont build_font(const std::string& source, FontMetrics metrics, std::vecto
     glyph_bounds.push_back(g.bounds());
     extent.add(glyph_bounds.back());
   }
-  const double size = std::max({extent.width(), extent.height(), 1e-300});
-  const double tolerance = kRelativeJoinTolerance * size;
+  // Pieces join within the shared fraction of the letter height (fonts/stroke_join.hpp): the
+  // font's design cap height where the format has one, else the height of its drawing.
+  const double height = format.nominal_cap_height > 0 ? format.nominal_cap_height
+                                                      : std::max(extent.height(), 1e-300);
+  const double tolerance = join_tolerance(height);
 
   StrokeFont font(std::filesystem::path(source).stem().string(), source, metrics);
   StrokeAssembler assembler(tolerance);

@@ -20,7 +20,8 @@ struct FontFormat {
   std::optional<double> advance_after_right_edge;
 };
 
-// Assembles each glyph's strokes (joining points that coincide within 1e-9 of the font's height),
+// Assembles each glyph's strokes (joining ends that meet within the shared fraction of the
+// letter height, fonts/stroke_join.hpp, taken of nominal_cap_height),
 // adds the glyphs, and measures the metrics the file does not state: cap height from 'H' (else
 // 'I'), x-height from 'x' (else the cap height), ascender and descender over all glyphs;
 // standard_height = cap_height. `metrics` brings what the parser knows (baseline, line height,

@@ -7,6 +7,7 @@
 #include "marker/cli/commands.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/output/output_file.hpp"
+#include "marker/store/store_error.hpp"
 
 namespace mark::cli {
 
@@ -39,6 +40,10 @@ int run(int argc, char** argv) {
   } catch (const Interrupted& e) {
     std::cerr << "marker: " << e.what() << "\n";
     return kExitInterrupted;
+  } catch (const StoreError& e) {
+    // A wait for the store that Ctrl-C ended is an interruption, not a failure.
+    std::cerr << "marker: " << e.what() << "\n";
+    return e.kind() == StoreErrorKind::cancelled ? kExitInterrupted : 1;
   } catch (const std::exception& e) {
     std::cerr << "marker: " << e.what() << "\n";
     return 1;

@@ -1,8 +1,9 @@
 // `marker code SYMBOLOGY DATA [--size MM | --module MM] [--style square|dot|line] [--x --y]
 //  [--json] [--preview FILE] [--dose-png FILE] …`
 // One code marked alone on the simulated scanner — through the same job runner as `mark`, in
-// device time — then read back off the simulated part by a real decoder (libdmtx, ZBar), with
-// grade-like figures. Exit 0 when it reads back as the data, 2 when not.
+// device time — then photographed by the simulated reader's camera, read by real decoders
+// (ZXing, libdmtx, ZBar) and graded after ISO/IEC TR 29158. Exit 0 when it reads back as the
+// data (and meets --require-grade), 2 when not.
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -20,6 +21,7 @@
 #include "marker/codes/code_json.hpp"
 #include "marker/job/job.hpp"
 #include "marker/job/sim_evaluator.hpp"
+#include "marker/limits/code_settings.hpp"
 #include "marker/limits/head_settings.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/preview/mark_preview.hpp"
@@ -38,6 +40,8 @@ struct Args {
   VerifyArgs verify;
   std::string preview;
   std::string dose_png;
+  std::string camera_png;
+  std::string require_grade;
   bool json = false;
 };
 
@@ -63,21 +67,33 @@ void print_summary(const JobSpec& spec, const JobResult& r) {
   std::printf("marked on %s, %s corners, %.0f mm/s: %.4f s (device), %zu strokes, jumps %.1f mm\n",
               spec.head.name.c_str(), std::string(to_string(spec.pen.corner)).c_str(), spec.pen.mark_speed_mm_s,
               r.mark_time_s, r.strokes, r.jump_length_mm);
-  std::printf("read by %s: %s", v.reader.c_str(), v.decoded ? "decoded" : "NOT decoded");
-  if (v.decoded)
-    std::printf(", data %s: '%s'", v.data_match ? "matches" : "DIFFERS", printable_bytes(v.decoded_data).c_str());
+  std::printf("readers (%s decides):", v.decided_by.c_str());
+  for (const ReaderOutcome& o : v.readers)
+    std::printf(" %s %s;", o.reader.c_str(),
+                !o.supported ? "n/a" : o.data_match ? "reads" : o.decoded ? "MISREADS" : "no read");
+  std::printf(" %s", v.data_match ? "PASS" : "FAIL");
+  if (v.decoded) std::printf(", '%s'", printable_bytes(v.decoded_data).c_str());
   std::printf("\n");
   if (v.module_x_um) {
     std::printf("module %.1f", *v.module_x_um);
-    if (v.module_y_um)
-      std::printf(" x %.1f µm, axial non-uniformity %.1f %% (%c)", *v.module_y_um, *v.axial_nonuniformity_pct,
-                  axial_nonuniformity_grade(*v.axial_nonuniformity_pct));
-    else
-      std::printf(" µm");
-    std::printf(", ");
+    if (v.module_y_um) std::printf(" x %.1f", *v.module_y_um);
+    std::printf(" µm (%s), ", v.reader.c_str());
   }
-  std::printf("fill %.0f %% (least %.0f %%), spill %.1f %%, %zu modules wrong, camera %.0f µm/px\n",
-              100 * v.fill_ratio, 100 * v.fill_ratio_min, 100 * v.spill_ratio, v.modules_wrong, v.camera_px_um);
+  if (v.fill_ratio)
+    std::printf("fill %.0f %% (least %.0f %%), spill %.1f %%, ", 100 * *v.fill_ratio, 100 * *v.fill_ratio_min,
+                100 * *v.spill_ratio);
+  std::printf("%zu modules wrong, camera %.0f µm/px\n", v.modules_wrong, v.camera_px_um);
+  if (v.grade) {
+    const IsoGrade& g = *v.grade;
+    std::printf("ISO/IEC TR 29158 grade %c: decode %c, cell contrast %c (%.0f %%), cell modulation %c, "
+                "fixed pattern %c, axial non-uniformity %c (%.1f %%), grid non-uniformity %c (%.2f), "
+                "unused error correction %c (%.0f %%)\n",
+                grade_letter(g.overall), grade_letter(g.decode), grade_letter(g.cell_contrast_grade),
+                100 * g.cell_contrast, grade_letter(g.cell_modulation_grade), grade_letter(g.fixed_pattern_grade),
+                grade_letter(g.axial_nonuniformity_grade), 100 * g.axial_nonuniformity,
+                grade_letter(g.grid_nonuniformity_grade), g.grid_nonuniformity,
+                grade_letter(g.unused_error_correction_grade), 100 * g.unused_error_correction);
+  }
 }
 
 int run_code(const Args& a) {
@@ -85,6 +101,9 @@ int run_code(const Args& a) {
   check_standard_output({{"--preview", &a.preview}, {"--dose-png", &a.dose_png}}, a.json);
   if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
   if (!a.dose_png.empty()) check_output_path("--dose-png", a.dose_png, {".png"});
+  if (!a.camera_png.empty()) check_output_path("--camera-png", a.camera_png, {".png"});
+  const int min_grade = a.require_grade.empty() ? 0 : parse_required_grade(a.require_grade, "--require-grade");
+  check_reader_choice(spec.verify.reading.reader, place_encoded(spec.codes.front()), "--reader");
   JobOptions options;
   options.virtual_time = true;  // one code: nothing to learn from waiting for the clock
   options.realtime = false;
@@ -103,12 +122,15 @@ int run_code(const Args& a) {
   if (!a.preview.empty())
     write_mark_preview(r.job.plan, scanner.dose(), a.preview);  // written whole
   if (!a.dose_png.empty()) {
-    const double margin = 2 * code.module_mm + spec.verify.response.spot_diameter_mm;
-    const FieldWindow w{code.bounds.min.x() - margin, code.bounds.min.y() - margin, code.bounds.max.x() + margin,
-                        code.bounds.max.y() + margin};
-    const CameraImage picture = part_picture(scanner.dose(), w, spec.verify.response, code.layout.invert);
+    const CameraSettings& cam = spec.verify.camera;
+    const GreyImage picture = part_picture(scanner.dose(), code_window(code, spec.verify.response),
+                                           spec.verify.response, code.layout.invert ? dark_part_look(cam.look) : cam.look);
     write_file_whole(a.dose_png, encode_grey_png(picture));
     j["dose_px_um"] = 1e6 / pixels_per_metre(picture.pixel_mm);
+  }
+  if (!a.camera_png.empty()) {
+    const GreyImage picture = code_picture(code, scanner.dose(), spec.verify).picture;
+    write_file_whole(a.camera_png, encode_grey_png(picture));
   }
   if (a.json) {
     std::cout << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
@@ -116,7 +138,13 @@ int run_code(const Args& a) {
     print_summary(spec, r);
     if (!a.dose_png.empty()) std::printf("wrote %s\n", a.dose_png.c_str());
   }
-  return r.codes.front().data_match ? 0 : 2;
+  const CodeVerification& v = r.codes.front();
+  if (min_grade > 0)
+    if (const auto why = grade_shortfall(v, min_grade)) {
+      std::fprintf(stderr, "marker: code below --require-grade %s: %s\n", a.require_grade.c_str(), why->c_str());
+      return 2;
+    }
+  return v.data_match ? 0 : 2;
 }
 
 }  // namespace
@@ -135,7 +163,10 @@ Command make_code_command() {
         add_pen_options(*sub, a->pen);
         add_verify_options(*sub, a->verify);
         sub->add_option("--preview", a->preview, "write the planned path over the dose (.png or .svg)");
-        sub->add_option("--dose-png", a->dose_png, "write the part as a camera sees it (PNG, pixel size in pHYs)");
+        sub->add_option("--dose-png", a->dose_png, "write the part itself at the dose raster's pixel (PNG, pixel size in pHYs)");
+        sub->add_option("--camera-png", a->camera_png,
+                        "write the code reader's camera picture (PNG, pixel size in pHYs)");
+        add_setting(*sub, kRequireGrade, a->require_grade);
         sub->add_flag("--json", a->json, "print one JSON object with the code's figures");
         return sub;
       },

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "marker/codes/code_object.hpp"
-#include "marker/codes/verify.hpp"
+#include "marker/job/code_photo.hpp"
 #include "marker/fill/fill_options.hpp"
 #include "marker/limits/code_settings.hpp"
 
@@ -39,11 +39,21 @@ struct VerifyArgs {
   double beam_diameter_mm = *kBeamDiameter.value;
   double line_width_mm = *kLineWidth.value;
   double line_speed_mm_s = *kLineSpeed.value;
-  double pixels_per_module = *kPixelsPerModule.value;
   double aperture = *kAperture.value;
+  std::string camera;  // KEY=VALUE,… over the default reader's camera
+  std::string reader;  // "" (any two agree) or zxing, libdmtx, zbar
 };
 
 void add_verify_options(CLI::App& app, VerifyArgs& args);
-VerifyOptions to_verify_options(const VerifyArgs& args);
+CodeCheckOptions to_verify_options(const VerifyArgs& args);
+
+// --camera KEY=VALUE,…: the default camera with the keys given changed, each checked against its
+// range. Throws InputError naming the key (an unknown one with the list of keys).
+CameraSettings parse_camera_option(const std::string& text);
+// The keys, their units, ranges and defaults, one per line (for --help and docs/codes.md).
+std::string camera_keys_help();
+
+// --require-grade A|B|C|D → 4..1. Throws InputError otherwise.
+int parse_required_grade(const std::string& text, const std::string& option);
 
 }  // namespace mark::cli

@@ -34,10 +34,12 @@ Command make_code_command();
 Command make_job_command();
 Command make_serial_command();
 Command make_log_command();
+Command make_store_command();
 Command make_devices_command();
 Command make_frame_command();
 Command make_head_command();
 Command make_options_command();
+Command make_lmc_command();
 
 std::vector<Command> all_commands();
 

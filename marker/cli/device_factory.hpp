@@ -1,10 +1,11 @@
 #pragma once
 // `--device` on the command line: which device a job runs on. "sim" (the default) is the
 // simulated scanner for the job's head and tick; "lmc", "lmc:SERIAL" and "lmc-capture:FILE" a
-// BJJCZ LMC board over USB (or its bytes captured to a file), its lens field the job's field.
-// With the device comes what can tell how the mark came out: the simulated scanner's evaluator
-// (marker/job/sim_evaluator.hpp) — of the device itself, or of the plant behind an emulated
-// board — or none for a real board.
+// BJJCZ LMC board over USB (or its bytes captured to a file), its lens field the job's field;
+// "lmc-emulated[:VARIANT]" the emulated board with the simulated scanner behind it
+// (emulated_lmc_device.hpp). With the device comes what can tell how the mark came out: the
+// simulated scanner's evaluator (marker/job/sim_evaluator.hpp) — of the device itself, or of the
+// scanner behind the emulated board — or none for a real board.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -21,6 +22,7 @@ struct SimSettings {
   std::uint64_t fault_at = UINT64_MAX;  // --inject fault@N
   bool trace = false;                   // --trace FILE.csv
   double laser_rise_s = 0;              // --laser-rise-us
+  bool virtual_time = false;            // --virtual-time: the emulated board's clock too
 };
 
 struct OpenedDevice {

@@ -1,9 +1,12 @@
 // `marker devices [--json] [--no-serial]`: the LMC boards on USB (0x9588:0x9899) with bus,
-// address, port and board serial — the serial is what `--device lmc:SERIAL` selects. A board
-// that cannot be opened (another program has it, no permission) is listed with the reason.
+// address, port and board serial — the serial is what `--device lmc:SERIAL` selects — and the
+// laser sources the driver sends words for. A board does not report which source is wired to it:
+// that is the pen's `source` (--source, a job file pen's "source"). A board that cannot be
+// opened (another program has it, no permission) is listed with the reason.
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "driver/laser_source.hpp"
 #include "driver/lmc/usb_discovery.hpp"
 #include "marker/cli/commands.hpp"
 
@@ -24,6 +27,8 @@ Command make_devices_command() {
       },
       [a] {
         const auto boards = lmc::list_usb_boards(!a->no_serial);
+        nlohmann::json sources = nlohmann::json::array();
+        for (const SourceLimits& s : kLaserSources) sources.push_back(s.name);
         if (a->json) {
           nlohmann::json list = nlohmann::json::array();
           for (const auto& b : boards) {
@@ -36,6 +41,7 @@ Command make_devices_command() {
                             {"serial", b.serial ? nlohmann::json(*b.serial) : nlohmann::json(nullptr)},
                             {"device", b.serial ? nlohmann::json("lmc:" + *b.serial) : nlohmann::json(nullptr)},
                             {"usable", b.usable},
+                            {"sources", sources},
                             {"note", b.note}});
           }
           std::cout << nlohmann::json{{"boards", list}}.dump() << "\n";
@@ -52,6 +58,10 @@ Command make_devices_command() {
           if (!b.note.empty()) std::printf("  %s", b.note.c_str());
           std::printf("\n");
         }
+        // The source is not the board's to tell: the pen says which words to send.
+        std::printf("laser sources: %s — the pen's --source (a job file pen's \"source\"), fiber unless set; "
+                    "the board does not report which is wired\n",
+                    laser_source_names().c_str());
         return 0;
       });
 }

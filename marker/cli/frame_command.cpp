@@ -1,9 +1,11 @@
-// `marker frame TEXT [layout options] --device lmc[:SERIAL]|lmc-capture:FILE [--shape box|hull|
-//  strokes] [--speed MM_S] [--laps N] [LMC options]`
-// Red-light framing, how an operator aligns a part: the red pointer traces the job's bounding
-// box (or its hull, or the strokes) with the laser port off and the master oscillator closed,
-// lap after lap until Ctrl-C / SIGTERM (or --laps), then the red pointer goes off. Stopping it
-// with Ctrl-C is the normal end: exit status 0.
+// `marker frame TEXT [layout options] --device lmc[:SERIAL]|lmc-capture:FILE|lmc-emulated[:VARIANT]
+//  [--shape box|hull|strokes] [--speed MM_S] [--laps N] [--no-orientation-mark] [LMC options]`
+// Red-light framing, how an operator aligns a part: the red pointer traces a small "F" at the
+// job's +x side (the orientation mark: on the part it must read as an F, or the head's axes are
+// not what --swap-xy / --flip-x / --flip-y say) and the job's bounding box (or its hull, or the
+// strokes) with the laser port off and the master oscillator closed, lap after lap until Ctrl-C
+// / SIGTERM (or --laps), then the red pointer goes off. Stopping it with Ctrl-C is the normal
+// end: exit status 0.
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -19,6 +21,7 @@
 #include "marker/cli/lmc_options.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/frame/frame_paths.hpp"
+#include "marker/frame/orientation_mark.hpp"
 #include "marker/limits/device_settings.hpp"
 
 namespace mark::cli {
@@ -33,6 +36,7 @@ Command make_frame_command() {
     double speed_mm_s = 0;
     long long laps = 0;
     bool json = false;
+    bool no_orientation_mark = false;
   };
   auto a = std::make_shared<Args>();
   return Command(
@@ -46,7 +50,9 @@ Command make_frame_command() {
         add_setting(*sub, kFrameShape, a->shape);
         add_setting(*sub, kFrameSpeed, a->speed_mm_s);
         add_setting(*sub, kFrameLaps, a->laps);
-        sub->add_flag("--json", a->json, "print {laps, packets, stopped, shape, width_mm, height_mm, speed_mm_s} at the end");
+        sub->add_flag("--json", a->json,
+                      "print {laps, packets, stopped, shape, orientation_mark, width_mm, height_mm, speed_mm_s} at the end");
+        add_setting(*sub, kNoOrientationMark, a->no_orientation_mark);
         add_lmc_options(*sub, a->lmc);
         return sub;
       },
@@ -54,16 +60,20 @@ Command make_frame_command() {
         const auto spec = lmc::parse_lmc_spec(a->device);
         if (!spec)
           throw InputError("--device '" + a->device +
-                           "': framing needs an LMC board (lmc, lmc:SERIAL or lmc-capture:FILE)");
+                           "': framing needs an LMC board (lmc, lmc:SERIAL, lmc-capture:FILE or lmc-emulated[:VARIANT])");
         if (spec->capture && a->laps == 0)
           throw InputError("--device lmc-capture: give --laps (an endless frame would never finish the capture)");
         const LaidOutText laid = build_figure(a->text, a->layout);
-        const auto paths = frame_paths(laid.figure, parse_frame_shape(a->shape));
+        auto paths = frame_paths(laid.figure, parse_frame_shape(a->shape));
+        // The F first: the operator checks the orientation before looking at the outline.
+        if (!a->no_orientation_mark)
+          paths.insert(paths.begin(), orientation_mark(laid.figure.bounds(), a->layout.field_mm));
         const auto device = lmc::open_lmc(*spec, to_lmc_options(a->lmc, a->layout.field_mm));
         const Box b = laid.figure.bounds();
         if (!a->json)
-          std::fprintf(stderr, "framing %s %.2f × %.2f mm on %s with the red pointer%s\n",
+          std::fprintf(stderr, "framing %s %.2f × %.2f mm on %s with the red pointer%s%s\n",
                        a->shape.c_str(), b.width(), b.height(), device->describe().name.c_str(),
+                       a->no_orientation_mark ? "" : "; the F at its right must read as an F on the part",
                        a->laps ? "" : "; Ctrl-C to stop");
 
         // Ctrl-C / SIGTERM: the handler only raises the flag; this watcher turns it into
@@ -91,6 +101,7 @@ Command make_frame_command() {
         if (a->json) {
           std::cout << nlohmann::json{{"laps", r.laps},           {"packets", r.packets},
                                       {"stopped", r.stopped},     {"shape", a->shape},
+                                      {"orientation_mark", !a->no_orientation_mark},
                                       {"width_mm", b.width()}, {"height_mm", b.height()},
                                       {"speed_mm_s", a->speed_mm_s}}
                            .dump()

@@ -1,9 +1,12 @@
-// `marker gcode TEXT [layout options] --mode depression|protrusion --tool-diameter MM --depth MM
-//  [--depth-per-pass MM] [--dialect linuxcnc|fanuc|plain] [--units mm|inch] [--safe-z MM]
-//  [--feed MM/MIN] [--plunge-feed MM/MIN] [--spindle RPM] [--header LINE]... [--footer LINE]...
-//  [--arc-tolerance MM] [--ellipse-chords] [--m2] [--stroke-width MM] [--margin MM]
-//  [--stepover MM] [--cutter-comp] [--tool-image FILE --pixel-size UM] -o FILE.ngc
-//  [--preview FILE.svg] [--json]`: CNC engraving G-code for the same text and fitting as the laser.
+// `marker gcode TEXT [layout options] [--char-spacing PCT] [--word-spacing PCT]
+//  --mode depression|protrusion|v-carve --tool-diameter MM --depth MM [--depth-per-pass MM]
+//  [--bit-angle DEG] [--max-depth MM] [--flat-bottom MM --cleanup-output FILE] [--carve-tolerance MM]
+//  [--dialect linuxcnc|fanuc|plain] [--units mm|in] [--safe-z MM] [--feed MM/MIN] [--plunge-feed MM/MIN]
+//  [--spindle RPM] [--header LINE]... [--footer LINE]... [--arc-tolerance MM] [--ellipse-chords] [--m2]
+//  [--stroke-width MM] [--margin MM] [--stepover MM] [--cutter-comp] [--tool-image FILE --pixel-size UM]
+//  [--stock W,H|X,Y,W,H] [--travel X,Y] -o FILE.ngc [--preview FILE.svg] [--json] [--quiet]`:
+//  CNC engraving G-code for the same text and fitting as the laser, checked against the machine's
+//  envelope instead of a galvo field.
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -11,15 +14,15 @@
 #include "base/error.hpp"
 #include "fonts/utf8.hpp"
 #include "marker/cli/commands.hpp"
-#include "marker/cli/layout_options.hpp"
-#include "marker/cli/option_ranges.hpp"
+#include "marker/cli/console_progress.hpp"
+#include "marker/cli/gcode_options.hpp"
 #include "marker/cli/output_options.hpp"
 #include "marker/cli/print.hpp"
 #include "marker/cli/tool_measure_report.hpp"
 #include "marker/cnc/depression.hpp"
 #include "marker/cnc/gcode_writer.hpp"
 #include "marker/cnc/letter_contacts.hpp"
-#include "marker/cnc/protrusion.hpp"
+#include "marker/cnc/stroke_gaps.hpp"
 #include "marker/cnc/tool/tool_measure.hpp"
 #include "marker/cnc/toolpath_preview.hpp"
 #include "marker/limits/cnc_settings.hpp"
@@ -27,42 +30,6 @@
 
 namespace mark::cli {
 namespace {
-
-// Pocket loops closer than 5 % of the tool diameter only multiply the cutting time.
-constexpr double kMinStepoverShare = 0.05;
-
-struct GcodeArgs {
-  std::string text;
-  LayoutArgs layout;
-  std::string mode;
-  CutSettings cut;
-  ProtrusionSettings protrusion;
-  GcodeOptions gcode;
-  std::string dialect;
-  std::string units;
-  bool m2 = false;
-  std::string tool_image;
-  double pixel_size_um = 0;
-  std::string output;
-  std::string preview;
-  bool json = false;
-};
-
-// The checks that need more than one option; single values were checked while parsing.
-void check_settings(const GcodeArgs& a, bool protrusion) {
-  if (a.protrusion.cutter_comp && !protrusion)
-    throw InputError("--cutter-comp: only protrusion walls can be compensated by the control");
-  if (a.protrusion.cutter_comp && a.gcode.dialect == Dialect::plain)
-    throw InputError("--cutter-comp needs --dialect linuxcnc or fanuc: grbl has no G41/G42");
-  if (a.protrusion.stepover_mm > 0) {
-    const double d = a.cut.tool_diameter_mm;
-    check_range("--stepover", a.protrusion.stepover_mm,
-                Range{kMinStepoverShare * d, d / 2,
-                      "mm (from 5 % of the --tool-diameter to its radius)"});
-  }
-  if (!a.tool_image.empty() && !(a.pixel_size_um > 0))
-    throw InputError("--tool-image needs --pixel-size UM (micrometres per pixel)");
-}
 
 // One warning per line on stderr, and the same text in the JSON.
 void warn(nlohmann::json& warnings, const std::string& text) {
@@ -114,22 +81,75 @@ nlohmann::json protrusion_json(const ProtrusionResult& res, bool cutter_comp) {
   return j;
 }
 
-int run_gcode(GcodeArgs& a) {
-  a.gcode.dialect = parse_dialect(a.dialect);
-  a.gcode.units = parse_units(a.units);
-  a.gcode.end_with_m30 = !a.m2;
-  const bool protrusion = a.mode == "protrusion";
-  check_settings(a, protrusion);
-  validate(a.gcode);  // header and footer lines against the dialect, before any work
-  check_standard_output({{"--output", &a.output}, {"--preview", &a.preview}}, a.json);
-  check_output_path("--output", a.output);
-  if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
+// A depression cut with a tool at least as wide as the gap between two strokes cuts them into one
+// groove.
+void warn_narrow_gap(const Figure& figure, double tool_mm, nlohmann::json& out, nlohmann::json& warnings,
+                     const Progress& progress) {
+  const std::optional<StrokeGap> gap = narrowest_stroke_gap(figure, tool_mm, progress);
+  out["narrowest_gap_mm"] = gap ? nlohmann::json(gap->width_mm) : nlohmann::json(nullptr);
+  if (!gap) return;
+  const Point at = (gap->a + gap->b) / 2;
+  warn(warnings, format("the tool (%g mm) is at least as wide as the narrowest gap between strokes, %.4f mm "
+                        "around (%.3f, %.3f) mm: the grooves on either side run into one; use a narrower tool, "
+                        "or raise --height or --char-spacing",
+                        tool_mm, gap->width_mm, at.x(), at.y()));
+}
 
-  const LaidOutText laid = build_figure(a.text, a.layout);
+nlohmann::json vcarve_json(const VCarveResult& r, const VCarveSettings& v, const GcodeArgs& a) {
+  return {{"bit_angle_deg", v.bit_angle_deg},
+          {"carve_tolerance_mm", v.tolerance_mm},
+          {"depth_limit_mm", r.depth_limit_mm},
+          {"deepest_mm", r.deepest_mm},
+          {"flat_area_mm2", r.flat_area_mm2},
+          {"uncleaned_area_mm2", r.uncleaned_area_mm2},
+          {"axis_edges", r.axis_edges},
+          {"pruned_edges", r.pruned_edges},
+          {"flat_bottom_mm", v.flat_bottom_mm > 0 ? nlohmann::json(v.flat_bottom_mm) : nlohmann::json(nullptr)},
+          {"cleanup_output", a.cleanup_output.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.cleanup_output)}};
+}
+
+void warn_flat(const VCarveResult& r, const VCarveSettings& v, nlohmann::json& warnings) {
+  if (r.uncleaned_area_mm2 <= 1e-6) return;
+  if (v.flat_bottom_mm > 0)
+    warn(warnings, format("the %g mm end mill cannot reach %.4f mm² of the flat bottoms (corners narrower than "
+                          "it): a smaller --flat-bottom tool reaches more",
+                          v.flat_bottom_mm, r.uncleaned_area_mm2));
+  else
+    warn(warnings, format("the depth limit of %.4f mm leaves %.4f mm² of flat bottoms that only the V-bit's tip "
+                          "crosses: clear them with --flat-bottom MM --cleanup-output FILE, or allow a deeper "
+                          "--max-depth",
+                          r.depth_limit_mm, r.flat_area_mm2));
+}
+
+nlohmann::json box_json(const Box& b) {
+  if (b.empty()) return nullptr;
+  return {{"x_min", b.min.x()}, {"y_min", b.min.y()}, {"x_max", b.max.x()}, {"y_max", b.max.y()}};
+}
+
+int run_gcode(GcodeArgs& a) {
+  check_gcode_args(a);
+  const bool protrusion = a.protrusion_mode(), vcarve = a.vcarve_mode();
+  validate(a.gcode);  // header and footer lines against the dialect, before any work
+  const MachineEnvelope envelope = machine_envelope(a);
+  check_standard_output({{"--output", &a.output}, {"--cleanup-output", &a.cleanup_output}, {"--preview", &a.preview}},
+                        a.json);
+  check_output_path("--output", a.output);
+  if (!a.cleanup_output.empty()) {
+    check_output_path("--cleanup-output", a.cleanup_output);
+    if (a.cleanup_output == a.output) throw InputError("--cleanup-output must differ from --output");
+  }
+  if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
+  ConsoleProgress progress = command_progress(a.quiet || a.json);
+
+  // The base point lies within the machine's travel.
+  const double reach = std::max(envelope.travel_x_mm, envelope.travel_y_mm);
+  const Range in_travel{-reach, reach, "mm (within the --travel, " + format_number(envelope.travel_x_mm) + " x " +
+                                           format_number(envelope.travel_y_mm) + " mm)"};
+  const LaidOutText laid = lay_out_text(a.text, a.layout, to_layout_options(a.layout, in_travel));
   nlohmann::json out = {{"output", a.output},
                         {"mode", a.mode},
                         {"dialect", to_string(a.gcode.dialect)},
-                        {"units", a.units == "in" ? "inch" : a.units},
+                        {"units", a.gcode.units == Units::inch ? "inch" : "mm"},
                         {"text", unescape_text(a.text)},
                         {"font", a.layout.font},
                         {"height_mm", a.layout.height_mm}};
@@ -155,21 +175,47 @@ int run_gcode(GcodeArgs& a) {
 
   Toolpath tp;
   ProtrusionResult res;
+  VCarveResult carve;
+  const VCarveSettings vs = vcarve_settings(a);
+  CutFootprint footprint{a.cut.tool_diameter_mm / 2, 0};
   if (protrusion) {
-    res = protrusion_toolpath(laid.figure, a.cut, a.protrusion);
+    res = protrusion_toolpath(laid.figure, a.cut, a.protrusion, progress);
     tp = res.toolpath;
     warn_touching(laid, res.stroke_width_mm, warnings);
     warn_uncut(res, warnings);
     out["protrusion"] = protrusion_json(res, a.protrusion.cutter_comp);
+  } else if (vcarve) {
+    carve = vcarve_toolpath(laid.figure, a.cut, vs, progress);
+    tp = carve.toolpath;
+    footprint.v_half_angle_rad = carve.half_angle_rad;
+    warn_flat(carve, vs, warnings);
+    out["vcarve"] = vcarve_json(carve, vs, a);
   } else {
-    tp = depression_toolpath(laid.figure, a.cut);
+    tp = depression_toolpath(laid.figure, a.cut, progress);
+    warn_narrow_gap(laid.figure, a.cut.tool_diameter_mm, out, warnings, progress);
   }
+  // The machine's envelope: every cut on the stock, the whole program within the travel.
+  const ToolpathExtent extent = toolpath_extent(tp, footprint);
+  require_within(extent, envelope,
+                 "move the text with --x, --y or --align, lower --height, or give a larger --stock or --travel");
   GcodeStats st;
-  const std::string program = write_gcode(tp, a.gcode, &st);
+  const std::string program = write_gcode(tp, a.gcode, &st, progress);
+  std::string cleanup_program;
+  GcodeStats cleanup_stats;
+  if (!a.cleanup_output.empty()) {
+    GcodeOptions co = a.gcode;
+    co.title = "marker v-carve clean-up, " + format_number(vs.flat_bottom_mm) + " mm end mill: " + unescape_text(a.text);
+    cleanup_program = write_gcode(carve.cleanup, co, &cleanup_stats, progress);
+  }
+  // Everything is computed: the files go out whole, the program first.
+  progress.writing_files();
   write_file_whole(a.output, program);
+  if (!a.cleanup_output.empty()) write_file_whole(a.cleanup_output, cleanup_program);
   if (!a.preview.empty())
-    write_toolpath_preview(laid.figure, tp, a.cut.tool_diameter_mm, protrusion ? &res : nullptr, a.preview);
+    write_toolpath_preview(laid.figure, tp, a.cut.tool_diameter_mm, protrusion ? &res : nullptr, a.preview,
+                           vcarve ? &carve : nullptr);
 
+  const RapidTravel travel = rapid_travel(tp);
   out["lines"] = st.lines;
   out["rapid_moves"] = st.rapids;
   out["feed_moves"] = st.feeds;
@@ -178,6 +224,13 @@ int run_gcode(GcodeArgs& a) {
   out["calls"] = st.calls;
   out["inlined"] = st.inlined;
   out["max_arc_radius_error_mm"] = st.max_arc_radius_error_mm;
+  out["rapid_travel_mm"] = travel.xy_mm;
+  out["retracts"] = travel.retracts;
+  out["cut_bounds_mm"] = box_json(extent.cuts);
+  out["program_bounds_mm"] = box_json(extent.moves);
+  out["stock_mm"] = envelope.stock ? box_json(*envelope.stock) : nlohmann::json(nullptr);
+  out["travel_mm"] = {{"x", envelope.travel_x_mm}, {"y", envelope.travel_y_mm}};
+  if (vcarve) out["vcarve"]["cleanup_lines"] = cleanup_stats.lines;
   out["preview"] = a.preview.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.preview);
   out["warnings"] = warnings;
   if (a.json) {
@@ -187,6 +240,9 @@ int run_gcode(GcodeArgs& a) {
   std::cout << format("%s: %zu lines, %zu rapid, %zu feed, %zu arc moves; %zu subprograms, %zu calls, %zu inlined\n",
                       a.output.c_str(), st.lines, st.rapids, st.feeds, st.arcs, tp.subs.size(), st.calls,
                       st.inlined);
+  std::cout << format("rapid travel %.1f mm, %zu retracts; cuts span x %.3f to %.3f, y %.3f to %.3f mm\n",
+                      travel.xy_mm, travel.retracts, extent.cuts.min.x(), extent.cuts.max.x(), extent.cuts.min.y(),
+                      extent.cuts.max.y());
   if (protrusion) {
     std::cout << format("plate %.3f x %.3f mm at (%.3f, %.3f); %zu pocket loops per pass, step-over %.3f mm\n",
                         res.plate.width(), res.plate.height(), res.plate.min.x(), res.plate.min.y(), res.loops,
@@ -195,6 +251,13 @@ int run_gcode(GcodeArgs& a) {
       std::cout << format("cutter compensation: %zu walls under G41, %zu without room for a lead move cut as "
                           "tool-centre loops\n",
                           res.comp_walls, res.walls_without_comp);
+  }
+  if (vcarve) {
+    std::cout << format("v-carve: %g° bit, deepest %.4f mm (limit %.4f mm), %.4f mm² flat bottom\n", vs.bit_angle_deg,
+                        carve.deepest_mm, carve.depth_limit_mm, carve.flat_area_mm2);
+    if (!a.cleanup_output.empty())
+      std::cout << format("%s: %zu lines for the %g mm end mill\n", a.cleanup_output.c_str(), cleanup_stats.lines,
+                          vs.flat_bottom_mm);
   }
   if (!a.preview.empty()) std::cout << "preview: " << a.preview << "\n";
   return 0;
@@ -206,34 +269,9 @@ Command make_gcode_command() {
   auto a = std::make_shared<GcodeArgs>();
   return Command(
       [a](CLI::App& app) {
-        auto* sub = app.add_subcommand("gcode", "CNC engraving G-code: depression (engraved) or protrusion (raised) letters");
-        sub->add_option("text", a->text, "text to engrave (UTF-8; \\n starts a new line)")->required();
-        add_layout_options(*sub, a->layout);
-        add_setting(*sub, kCncMode, a->mode);
-        add_setting(*sub, kToolDiameter, a->cut.tool_diameter_mm);
-        add_setting(*sub, kDepth, a->cut.depth_mm);
-        add_setting(*sub, kDepthPerPass, a->cut.depth_per_pass_mm);
-        add_setting(*sub, kSafeZ, a->cut.safe_z_mm);
-        add_setting(*sub, kFeed, a->cut.feed_mm_min);
-        add_setting(*sub, kPlungeFeed, a->cut.plunge_feed_mm_min);
-        add_setting(*sub, kSpindle, a->gcode.spindle_rpm);
-        add_setting(*sub, kDialect, a->dialect);
-        add_setting(*sub, kUnits, a->units);
-        add_setting(*sub, kHeader, a->gcode.header)->allow_extra_args(false);
-        add_setting(*sub, kFooter, a->gcode.footer)->allow_extra_args(false);
-        add_setting(*sub, kTitle, a->gcode.title);
-        add_setting(*sub, kM2, a->m2);
-        add_setting(*sub, kArcTolerance, a->cut.arcs.tolerance_mm);
-        add_setting(*sub, kEllipseChords, a->cut.arcs.ellipse_chords);
-        add_setting(*sub, kStrokeWidth, a->protrusion.stroke_width_mm);
-        add_setting(*sub, kMargin, a->protrusion.margin_mm);
-        add_setting(*sub, kStepover, a->protrusion.stepover_mm);
-        add_setting(*sub, kCutterComp, a->protrusion.cutter_comp);
-        sub->add_option("--tool-image", a->tool_image, "shadow image of the tool (PNG or PGM): its measured diameter replaces --tool-diameter in the offsets");
-        add_setting(*sub, kPixelSize, a->pixel_size_um);
-        sub->add_option("-o,--output", a->output, "G-code file to write")->required();
-        sub->add_option("--preview", a->preview, "draw the toolpath to FILE.svg or FILE.png");
-        sub->add_flag("--json", a->json, "print the result as one JSON object (docs/json.md)");
+        auto* sub = app.add_subcommand(
+            "gcode", "CNC engraving G-code: depression (engraved), protrusion (raised) or v-carved letters");
+        add_gcode_options(*sub, *a);
         return sub;
       },
       [a] { return run_gcode(*a); });

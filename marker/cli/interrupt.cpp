@@ -7,9 +7,12 @@ namespace {
 
 std::atomic<StopFlag*> g_flag{nullptr};
 volatile std::sig_atomic_t g_signal = 0;
+std::atomic<std::uint64_t> g_count{0};
+static_assert(std::atomic<std::uint64_t>::is_always_lock_free, "a signal handler may only touch lock-free atomics");
 
 extern "C" void on_signal(int sig) {
   g_signal = sig;
+  g_count.fetch_add(1, std::memory_order_acq_rel);
   if (StopFlag* f = g_flag.load(std::memory_order_acquire)) f->request();
 }
 
@@ -33,6 +36,8 @@ InterruptScope::~InterruptScope() {
 }
 
 int InterruptScope::signal() const { return g_signal; }
+
+std::uint64_t interrupt_count() { return g_count.load(std::memory_order_acquire); }
 
 StopFlag& interrupt_flag() {
   static StopFlag flag;

@@ -3,6 +3,7 @@
 // (async-signal-safe), the drain puts the laser out within one block and the command reports
 // where it stopped and exits 130. Outside the scope the previous handlers are back.
 #include <csignal>
+#include <cstdint>
 
 #include "ringbuffer/stop_flag.hpp"
 
@@ -25,6 +26,11 @@ class InterruptScope {
 // The stop flag of the running command: cli::run() installs an InterruptScope on it around
 // every command, so Ctrl-C reaches whatever the command polls (a job's drain, a planner).
 StopFlag& interrupt_flag();
+
+// How many SIGINT / SIGTERM this process received: a wait that sees it change was asked to
+// stop (the serial store ends a lock or server wait on a new Ctrl-C even while the stop flag
+// is already set by an earlier one).
+std::uint64_t interrupt_count();
 
 // Exit status of a command stopped by a signal: 128 + SIGINT, as shells report it.
 inline constexpr int kExitInterrupted = 130;

@@ -24,6 +24,7 @@
 #include "marker/limits/production_settings.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/production/part_texts.hpp"
+#include "marker/production/text_repeats.hpp"
 #include "marker/vars/clock.hpp"
 
 namespace mark::cli {
@@ -47,6 +48,7 @@ struct NewArgs {
   std::string speed;  // mm/s, or auto: from the first part's figure and the head
   std::optional<double> jump_speed_mm_s, tick_us;
   LaserSettings laser;
+  std::string source{kLaserSource.value};  // laser.source, as --source names it
   int passes = 1;
   long long start = 1, step = 1, marks_per_serial = 1;
   int width = 0;
@@ -65,10 +67,13 @@ int run_check(const CheckArgs& a) {
   std::vector<std::string> warnings;
   const JobFonts fonts(job, &warnings);
   for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
+  for (const std::string& w : text_repeat_warnings(job)) std::cerr << "marker: warning: " << w << "\n";
   // The first part of a fresh store (the store, if any, is not read: checking a job touches
-  // nothing but the job and its fonts).
+  // nothing but the job, its fonts and its data list).
   std::map<std::string, std::int64_t> serials;
-  const std::vector<ObjectText> texts = first_part_texts(job, variables, SystemClock().now(), &serials);
+  const std::optional<DataList> data = job.data ? std::optional(load_data_list(job)) : std::nullopt;
+  const std::vector<ObjectText> texts =
+      first_part_texts(job, variables, SystemClock().now(), &serials, data ? &*data : nullptr);
 
   nlohmann::json out = {{"job", job.job_name}, {"file", a.file}, {"head", job.head.name},
                         {"field_mm", job.head.field_mm}, {"spot_diameter_um", job.head.spot_diameter_um},
@@ -98,6 +103,7 @@ int run_check(const CheckArgs& a) {
                               {"power_pct", pen.laser.power_pct},
                               {"frequency_khz", pen.laser.frequency_khz},
                               {"pulse_width_ns", pen.laser.pulse_width_ns},
+                              {"source", std::string(to_string(pen.laser.source))},
                               {"passes", pen.passes},
                               {"pulse_spacing_um", spacing_um}, {"pulse_overlap_fraction", overlap}});
   }
@@ -184,6 +190,7 @@ nlohmann::ordered_json new_job_json(const NewArgs& a) {
   put(pen, kPower.name, a.laser.power_pct);
   put(pen, kFrequency.name, a.laser.frequency_khz);
   put(pen, kPulseWidth.name, a.laser.pulse_width_ns);
+  put(pen, kLaserSource.name, a.source);
   put(pen, kPasses.name, a.passes);
   if (a.jump_speed_mm_s) put(pen, kJumpSpeed.name, *a.jump_speed_mm_s);
   if (a.tick_us) put(pen, kTick.name, *a.tick_us);
@@ -286,6 +293,7 @@ Command make_job_command() {
         add_head_limited_setting(*n, kJumpSpeed, a.jump_speed_mm_s);
         add_head_limited_setting(*n, kTick, a.tick_us);
         add_laser_options(*n, a.laser);
+        add_setting(*n, kLaserSource, a.source);
         add_setting(*n, kPasses, a.passes);
         for (const auto& [setting, value] : {std::pair{&kCounterStart, &a.start}, {&kCounterStep, &a.step},
                                              {&kMarksPerSerial, &a.marks_per_serial}})

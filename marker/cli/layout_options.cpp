@@ -6,6 +6,7 @@
 #include "fonts/catalog.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
+#include "marker/layout/respace.hpp"
 #include "marker/limits/head_settings.hpp"
 #include "marker/limits/layout_settings.hpp"
 
@@ -42,15 +43,15 @@ std::string unescape_text(const std::string& text) {
   return out;
 }
 
-void add_layout_options(CLI::App& app, LayoutArgs& a, const Text& font) {
+void add_layout_options(CLI::App& app, LayoutArgs& a, const Text& font, bool galvo_field) {
   add_setting(app, font, a.font);
   add_setting(app, kHeight, a.height_mm);
   add_setting(app, kWidthFactor, a.width_factor);
   add_setting(app, kGap, a.gap_mm);
   add_setting(app, kLineSpacing, a.line_spacing);
   add_setting(app, kAlign, a.align);
-  add_setting(app, kX, a.x_mm);
-  add_setting(app, kY, a.y_mm);
+  add_setting(app, galvo_field ? kX : kWorkX, a.x_mm);
+  add_setting(app, galvo_field ? kY : kWorkY, a.y_mm);
   add_setting(app, kAngle, a.angle_deg);
   auto* circle = add_setting(app, kCircle, a.circle);
   auto* start = add_setting(app, kStartAngle, a.start_angle_deg);
@@ -63,7 +64,12 @@ void add_layout_options(CLI::App& app, LayoutArgs& a, const Text& font) {
   add_setting(app, kItalic, a.italic_deg);
   add_setting(app, kMirror, a.mirror);
   add_setting(app, kReplaceMissing, a.replace_missing);
-  add_setting(app, kField, a.field_mm);
+  if (galvo_field) add_setting(app, kField, a.field_mm);
+}
+
+void add_spacing_options(CLI::App& app, LayoutArgs& a) {
+  add_setting(app, kCharSpacing, a.char_spacing_pct);
+  add_setting(app, kWordSpacing, a.word_spacing_pct);
 }
 
 void add_fill_options(CLI::App& app, LayoutArgs& a) {
@@ -82,9 +88,12 @@ std::optional<FillOptions> to_fill(const LayoutArgs& a, double beam_radius_mm) {
 
 LayoutOptions to_layout_options(const LayoutArgs& a) {
   // The base point lies in the field the text is checked against.
-  const Range in_field{-a.field_mm / 2, a.field_mm / 2, "mm (the --field is " + format_number(a.field_mm) + " mm)"};
-  check_range("--x", a.x_mm, in_field);
-  check_range("--y", a.y_mm, in_field);
+  return to_layout_options(a, Range{-a.field_mm / 2, a.field_mm / 2, "mm (the --field is " + format_number(a.field_mm) + " mm)"});
+}
+
+LayoutOptions to_layout_options(const LayoutArgs& a, const Range& position) {
+  check_range("--x", a.x_mm, position);
+  check_range("--y", a.y_mm, position);
   LayoutOptions o;
   o.height_mm = a.height_mm;
   o.width_factor = a.width_factor;
@@ -100,13 +109,15 @@ LayoutOptions to_layout_options(const LayoutArgs& a) {
   return o;
 }
 
-LaidOutText build_figure(const std::string& text, const LayoutArgs& args) {
+LaidOutText lay_out_text(const std::string& text, const LayoutArgs& args, const LayoutOptions& options) {
   Warnings warnings;
   LaidOutText out;
   out.font = open_font(args.font, &warnings);
   for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
+  if (args.char_spacing_pct || args.word_spacing_pct)
+    out.font = std::make_shared<const StrokeFont>(respaced_font(*out.font, args.char_spacing_pct, args.word_spacing_pct));
   const std::optional<FillOptions> fill = to_fill(args);
-  out.figure = layout_text(unescape_text(text), *out.font, to_layout_options(args));
+  out.figure = layout_text(unescape_text(text), *out.font, options);
   if (fill) {
     FillStats stats;
     out.figure = fill_figure(out.figure, *fill, &stats);
@@ -114,6 +125,11 @@ LaidOutText build_figure(const std::string& text, const LayoutArgs& args) {
   }
   out.field = Field{args.field_mm};
   if (out.figure.bounds().empty()) throw InputError("text '" + text + "' has nothing to mark");
+  return out;
+}
+
+LaidOutText build_figure(const std::string& text, const LayoutArgs& args) {
+  LaidOutText out = lay_out_text(text, args, to_layout_options(args));
   require_inside(out.figure.bounds(), out.field, "the text layout", kFieldRemedy);
   return out;
 }

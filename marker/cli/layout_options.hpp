@@ -36,22 +36,33 @@ struct LayoutArgs {
   bool mirror = false;
   bool replace_missing = false;
   double field_mm = *kField.value;
+  // Spacing as F-Engrave gives it (add_spacing_options): the gap after each letter's drawing and
+  // the advance of a space, in % of the character height; unset: the font's own spacing.
+  std::optional<double> char_spacing_pct;
+  std::optional<double> word_spacing_pct;
   // Filled outline fonts.
   std::string fill{kFill.value};  // none | hatch
   std::string fill_rule{kFillRule.value};
   HatchArgs hatch;
 };
 
-// `font`: the font setting the command takes (peen's dot fonts have their own).
-void add_layout_options(CLI::App& app, LayoutArgs& args, const Text& font = kFont);
+// `font`: the font setting the command takes (peen's dot fonts have their own). `galvo_field`:
+// the text is marked in a square galvo field (--field, --x/--y inside it); a milling machine has
+// a stock and a travel instead, and its command checks those.
+void add_layout_options(CLI::App& app, LayoutArgs& args, const Text& font = kFont, bool galvo_field = true);
+// --char-spacing PCT, --word-spacing PCT (F-Engrave's spacing; the font's own without them).
+void add_spacing_options(CLI::App& app, LayoutArgs& args);
 void add_fill_options(CLI::App& app, LayoutArgs& args);
 
 // The fill to apply, or nothing for --fill none; insets default to `beam_radius_mm`. Throws
 // InputError naming the option.
 std::optional<FillOptions> to_fill(const LayoutArgs& args, double beam_radius_mm = 0.02);
 
-// LayoutOptions from the parsed arguments; throws InputError for a malformed --circle.
+// LayoutOptions from the parsed arguments with --x/--y inside the --field; throws InputError for
+// a malformed --circle.
 LayoutOptions to_layout_options(const LayoutArgs& args);
+// The same with --x/--y checked against the given range (a machine's travel).
+LayoutOptions to_layout_options(const LayoutArgs& args, const Range& position);
 
 struct LaidOutText {
   std::shared_ptr<const StrokeFont> font;
@@ -67,8 +78,11 @@ std::string unescape_text(const std::string& text);
 inline constexpr const char* kFieldRemedy =
     "lower --height, move the text with --x, --y or --align, or enlarge --field";
 
-// Opens the font, lays the text out (and fills it with --fill hatch), and refuses an empty text
-// or a layout that leaves the field.
+// Opens the font (respaced by --char-spacing / --word-spacing), lays the text out (and fills it
+// with --fill hatch), and refuses an empty text. No field: the caller checks where it lies.
+LaidOutText lay_out_text(const std::string& text, const LayoutArgs& args, const LayoutOptions& options);
+
+// lay_out_text with the options from the arguments, refusing a layout that leaves the field.
 LaidOutText build_figure(const std::string& text, const LayoutArgs& args);
 
 }  // namespace mark::cli

@@ -7,12 +7,15 @@
 
 namespace mark::cli {
 
+// The table's defaults are EzCad's axes, as the driver names them.
+static_assert(kSwapXy.on == lmc::kEzCadAxes.swap_xy && kFlipX.on == lmc::kEzCadAxes.flip_x &&
+              kFlipY.on == lmc::kEzCadAxes.flip_y);
+
 void add_lmc_options(CLI::App& app, LmcArgs& a) {
   add_setting(app, kCorrectionFile, a.cor_file);
   add_setting(app, kSwapXy, a.swap_xy);
   add_setting(app, kFlipX, a.flip_x);
   add_setting(app, kFlipY, a.flip_y);
-  add_setting(app, kLaserSource, a.source);
   add_setting(app, kLaserBit, a.laser_bit);
   add_setting(app, kRedBit, a.red_bit);
   add_setting(app, kPolygonDelayUnits, a.polygon_unit);
@@ -27,7 +30,6 @@ lmc::LmcOptions to_lmc_options(const LmcArgs& a, double field_mm) {
   o.field_mm = field_mm;
   o.chord_tolerance_mm = a.chord_tolerance_um * 1e-3;
   o.axes = {a.swap_xy, a.flip_x, a.flip_y};
-  o.source = a.source == "mopa" ? lmc::LaserSource::mopa : lmc::LaserSource::fiber;
   o.laser_port_bit = a.laser_bit;
   o.red_pointer_bit = a.red_bit;
   o.polygon_delay_unit = a.polygon_unit == "us" ? lmc::PolygonDelayUnit::signed_us

@@ -1,7 +1,8 @@
 #pragma once
 // The options every command that drives an LMC board shares: the correction file, how the head
-// is wired (--swap-xy, --flip-x, --flip-y), the laser source, the output-port bits, the polygon
-// delay's units and the chord tolerance. The lens field is the layout's --field.
+// is wired (--swap-xy, --flip-x, --flip-y), the output-port bits, the polygon delay's units and
+// the chord tolerance. The lens field is the layout's --field; the laser source is the pen's
+// (--source).
 #include <CLI/CLI.hpp>
 #include <string>
 
@@ -13,8 +14,7 @@ namespace mark::cli {
 struct LmcArgs {
   // Defaults from the settings table (marker/limits/device_settings.hpp).
   std::string cor_file;
-  bool swap_xy = false, flip_x = false, flip_y = false;
-  std::string source{kLaserSource.value};
+  bool swap_xy = kSwapXy.on, flip_x = kFlipX.on, flip_y = kFlipY.on;
   int laser_bit = static_cast<int>(*kLaserBit.value);
   int red_bit = static_cast<int>(*kRedBit.value);
   std::string polygon_unit{kPolygonDelayUnits.value};

@@ -4,6 +4,7 @@
 //  [--speed MM_S|auto] [--lookahead] [--feed-forward] [--head-profile FILE] [pen parameters]
 //  [--power PCT] [--frequency KHZ] [--pulse-width NS] [--preview FILE.png] [--dose-png FILE.png]
 //  [--virtual-time] [--json] [--inject KIND@N] [--trace FILE.csv] [--require-quality high|good]
+//  [--require-grade A|B|C|D] [--camera KEY=VALUE,…] [--reader zxing|libdmtx|zbar]
 //  [LMC options]`
 // `marker mark --job FILE [--set NAME=VALUE …] [--count N] [--store PATH|URL] [--station NAME]
 //  [--remark ID]`: the production run, in mark_job.cpp.
@@ -31,6 +32,7 @@
 #include "marker/cli/device_factory.hpp"
 #include "marker/cli/head_options.hpp"
 #include "marker/cli/inject_option.hpp"
+#include "marker/cli/production_options.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/lmc_options.hpp"
@@ -42,9 +44,12 @@
 #include "marker/codes/code_data.hpp"
 #include "marker/codes/code_json.hpp"
 #include "marker/job/auto_speed.hpp"
+#include "marker/job/code_requirement.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
 #include "marker/job/job_json.hpp"
+#include "marker/job/sim_evaluator.hpp"
+#include "marker/limits/code_settings.hpp"
 #include "marker/limits/device_settings.hpp"
 #include "marker/limits/marking_settings.hpp"
 #include "marker/limits/pen_settings.hpp"
@@ -68,7 +73,9 @@ struct MarkArgs {
   std::string trace;
   std::string inject;
   std::string require_quality;
+  std::string require_grade;
   LaserSettings laser;
+  std::string source{kLaserSource.value};  // laser.source, as --source names it
   LmcArgs lmc;
   std::string code;  // SYMBOLOGY:DATA
   CodeArgs code_args;
@@ -126,6 +133,8 @@ PreparedMark prepare_mark(const MarkArgs& a) {
   pen.speed_mm_s = speed_mm_s;
   spec.pen = make_pen(pen, spec.head);
   spec.laser = a.laser;
+  spec.laser.source = *parse_laser_source(a.source);
+  check_laser_settings(spec.laser, "--source " + a.source + ": ");
   return {std::move(spec), std::move(laid_out), layout_s};
 }
 
@@ -174,11 +183,12 @@ void print_summary(const JobSpec& spec, const JobResult& r, const std::string& d
   for (std::size_t k = 0; k < r.codes.size(); ++k) {
     const CodeVerification& v = r.codes[k];
     const PlacedCode& c = r.job.codes[k];
-    std::printf("code %zu: %s %dx%d, module %.0f µm, read by %s: %s", k + 1,
+    std::printf("code %zu: %s %dx%d, module %.0f µm, readers (%s): %s", k + 1,
                 std::string(to_string(c.matrix.symbology)).c_str(), c.matrix.rows, c.matrix.cols, v.module_um,
-                v.reader.c_str(), v.data_match ? "matches" : v.decoded ? "DIFFERS" : "NOT decoded");
+                v.decided_by.c_str(), v.data_match ? "pass" : v.decoded ? "FAIL (misread or not agreed)" : "NOT decoded");
     if (v.decoded) std::printf(" '%s'", printable_bytes(v.decoded_data).c_str());
-    std::printf(", fill %.0f %%, %zu modules wrong\n", 100 * v.fill_ratio, v.modules_wrong);
+    if (v.grade) std::printf(", grade %c", grade_letter(v.grade->overall));
+    std::printf(", %zu modules wrong\n", v.modules_wrong);
   }
 }
 
@@ -260,39 +270,53 @@ void require_quality(const JobSpec& spec, const CompiledJob& job, const std::str
   throw InputError(msg);
 }
 
+// --require-grade: the codes graded off the predicted mark; below the grade the job is refused
+// before anything fires.
+void require_grade(const JobSpec& spec, const CompiledJob& job, const std::string& letter, double laser_rise_s) {
+  const int grade = parse_required_grade(letter, "--require-grade");
+  if (spec.codes.empty()) throw InputError("--require-grade " + letter + ": the job marks no code (give --code)");
+  if (const auto why = predicted_code_grade_shortfall(spec, job, grade, laser_rise_s))
+    throw InputError("--require-grade " + letter + ": " + *why + "; nothing was fired");
+}
+
 int run_mark(const MarkArgs& a) {
   if (a.text.empty() && a.code.empty()) throw InputError("mark: give the text to mark (or --code), or --job FILE");
   PreparedMark prepared = prepare_mark(a);
   const JobSpec& spec = prepared.spec;
+  for (const CodeObject& c : spec.codes) check_reader_choice(spec.verify.reading.reader, place_encoded(c), "--reader");
   // Every file the job writes is checked before anything is fired.
   check_standard_output({{"--preview", &a.preview}, {"--dose-png", &a.dose_png}, {"--trace", &a.trace}}, a.json);
   if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
   if (!a.dose_png.empty()) check_output_path("--dose-png", a.dose_png, {".png"});
   if (!a.trace.empty()) check_output_path("--trace", a.trace);
   const InjectArg inject = a.inject.empty() ? InjectArg{} : parse_inject(a.inject);
-  // One plan for the sample-level prediction, kept for the run when the device takes samples
-  // too (the simulated scanner): the text is laid out and planned once per mark.
+  if (inject.store) throw InputError("--inject " + a.inject + ": the store applies to a production run: give --job FILE");
+  // One plan for the sample-level prediction (quality and code grades), kept for the run when
+  // the device takes samples too (the simulated scanner): the text is laid out and planned once
+  // per mark.
   const auto seconds_since = [](std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   };
   std::optional<CompiledJob> sample_plan;
   double plan_s = 0;
-  if (!a.require_quality.empty()) {
+  if (!a.require_quality.empty() || !a.require_grade.empty()) {
     const auto t = std::chrono::steady_clock::now();
     sample_plan = plan_job(prepared.laid_out, spec, DeviceLevel::samples);
     plan_s = seconds_since(t);
-    require_quality(spec, *sample_plan, a.require_quality, a.head.laser_rise_us * 1e-6);
   }
+  if (!a.require_quality.empty()) require_quality(spec, *sample_plan, a.require_quality, a.head.laser_rise_us * 1e-6);
+  if (!a.require_grade.empty()) require_grade(spec, *sample_plan, a.require_grade, a.head.laser_rise_us * 1e-6);
 
   SimSettings sim_settings;
   sim_settings.fault_at = inject.device_fault_at;
   sim_settings.trace = !a.trace.empty();
   sim_settings.laser_rise_s = a.head.laser_rise_us * 1e-6;
+  sim_settings.virtual_time = a.virtual_time;
   const OpenedDevice opened = open_device(a.device, spec, sim_settings, a.lmc);
   const std::unique_ptr<Device>& device = opened.device;
   const SimScanner* scanner = opened.simulator ? &opened.simulator->scanner() : nullptr;
   if (!scanner && (!a.preview.empty() || !a.dose_png.empty() || !a.trace.empty()))
-    throw InputError("--preview, --dose-png and --trace need the simulated scanner (--device sim)");
+    throw InputError("--preview, --dose-png and --trace need a simulated scanner (--device sim or lmc-emulated)");
 
   JobOptions options;
   options.virtual_time = a.virtual_time;
@@ -313,16 +337,17 @@ int run_mark(const MarkArgs& a) {
   const JobResult r = run_compiled_job(spec, std::move(*job), options, *device);
   // A job stopped by Ctrl-C leaves no files: what it would show is not the part on the machine's
   // table. A failed job's files show how far it got.
-  std::optional<CameraImage> picture;
+  std::optional<GreyImage> picture;
   if (scanner && !interrupt_flag().requested()) {
     if (!a.preview.empty()) write_mark_preview(r.job.plan, scanner->dose(), a.preview);
     if (!a.dose_png.empty()) {
-      // The part as a camera sees it; a job with an inverted code is on a dark part.
+      // The part itself; a job with an inverted code is on a dark part.
       bool dark_part = false;
       for (const CodeObject& c : spec.codes) dark_part = dark_part || c.layout.invert;
       FieldWindow window;
       if (!dosed_window(scanner->dose(), 0.2, window)) window = {-1, -1, 1, 1};
-      picture = part_picture(scanner->dose(), window, spec.verify.response, dark_part);
+      const PartLook& look = spec.verify.camera.look;
+      picture = part_picture(scanner->dose(), window, spec.verify.response, dark_part ? dark_part_look(look) : look);
       write_file_whole(a.dose_png, encode_grey_png(*picture));
     }
     if (!a.trace.empty()) write_trace(scanner->trace(), a.trace);
@@ -409,7 +434,7 @@ Command make_mark_command() {
         sub->add_option("--preview", a->preview,
                         "write the marked result: dose under the planned path (.png or .svg)");
         sub->add_option("--dose-png", a->dose_png,
-                        "write the part as a camera sees it (PNG, pixel size in pHYs and as dose_px_um)");
+                        "write the part itself at the dose raster's pixel (PNG, pixel size in pHYs and as dose_px_um)");
         sub->add_option("--trace", a->trace,
                         "write one CSV row per sample: t_s,cmd_x_mm,cmd_y_mm,laser,beam_x_mm,beam_y_mm");
         modes->shared.push_back(sub->add_option(
@@ -417,6 +442,7 @@ Command make_mark_command() {
             "fault injection: underrun@N, abort@N or fault@N (N: sample index; with --job in every "
             "object's device job)"));
         add_setting(*sub, kRequireQuality, a->require_quality);
+        add_setting(*sub, kRequireGrade, a->require_grade);
         modes->shared.push_back(add_setting(*sub, kVirtualTime, a->virtual_time));
         modes->shared.push_back(sub->add_flag(
             "--json", a->json, "print one JSON object with the job's figures (--job: one per part, JSON Lines)"));
@@ -425,10 +451,16 @@ Command make_mark_command() {
             sub->add_option("--job", p.job, "production run: mark the parts of this job file"),
             add_setting(*sub, kSet, p.sets),
             add_setting(*sub, kPartCount, p.count),
-            sub->add_option("--store", p.store, "--job: serial store, SQLite file or postgresql://… (default: next to the job)"),
             add_setting(*sub, kStation, p.station),
-            add_setting(*sub, kRemark, p.remark)};
+            add_setting(*sub, kRemark, p.remark),
+            add_setting(*sub, kRemarkReason, p.reason),
+            add_setting(*sub, kCreateCounters, p.create_counters)};
+        // --store, --store-wait-ms, --store-attempts: the production run's.
+        const std::size_t before = sub->get_options().size();
+        add_store_options(*sub, p.store, true);
+        for (std::size_t i = before; i < sub->get_options().size(); ++i) modes->production.push_back(sub->get_options()[i]);
         add_laser_options(*sub, a->laser);
+        add_setting(*sub, kLaserSource, a->source);
         add_lmc_options(*sub, a->lmc);
         return sub;
       },

@@ -1,6 +1,7 @@
 #include "marker/cli/mark_job.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "base/error.hpp"
@@ -13,6 +14,7 @@
 #include "marker/production/part_json.hpp"
 #include "marker/production/part_run.hpp"
 #include "marker/store/open_store.hpp"
+#include "marker/store/store_location.hpp"
 
 namespace mark::cli {
 namespace {
@@ -57,6 +59,59 @@ void print_stop(const PartResult& p, long long index) {
                    : ("; its numbers are void (" + serials_text(p.serials) + ")").c_str());
 }
 
+// The station's start: its journal replayed, rows a dead run left open closed, counters the
+// store lacks created (--create-counters) or refused with the command that creates them.
+void start_station(SerialStore& store, const MarkContext& context, const JobFile& job, const MarkJobArgs& a) {
+  const StationStart started = store.start_station(context);
+  const auto ids = [](const std::vector<std::int64_t>& list) {
+    std::string s;
+    for (std::int64_t id : list) s.append(s.empty() ? "" : ", ").append(std::to_string(id));
+    return s;
+  };
+  if (!started.replayed.empty())
+    std::fprintf(stderr, "marker: station %s: %zu outcome(s) the store had not taken were in the outcome journal "
+                         "(id %s): recorded now\n",
+                 context.station.c_str(), started.replayed.size(), ids(started.replayed).c_str());
+  if (!started.closed.empty())
+    std::fprintf(stderr,
+                 "marker: station %s: %zu part(s) a previous run left without an outcome (id %s) "
+                 "recorded aborted; their numbers are void\n",
+                 context.station.c_str(), started.closed.size(), ids(started.closed).c_str());
+  for (const std::string& n : started.notes) std::fprintf(stderr, "marker: warning: %s\n", n.c_str());
+  if (a.remark) return;
+  if (a.create_counters) {
+    for (const std::string& name : store.create_missing(job.used_counters(), job.shifts, context))
+      std::fprintf(stderr, "marker: created counter %s in the store (next value %lld)\n", name.c_str(),
+                   static_cast<long long>(job.counters.at(name).start));
+    return;
+  }
+  for (const auto& [name, spec] : job.used_counters()) {
+    if (store.status(name, nullptr, job.shifts, context.now).known) continue;
+    std::string msg = a.job + ": counter \"" + name + "\" is not in the serial store " + store.describe() +
+                      ": create it with `marker serial create " + name + " --job " + a.job +
+                      "` (starts at " + std::to_string(spec.start) + ", or --start N) or mark with --create-counters";
+    const std::string old = job_side_store_path(a.job);
+    if (a.store.store.empty() && std::filesystem::exists(old))
+      msg += "; the job's store from before the station store is " + old + ": mark with --store " + old +
+             " or move it (docs/store.md)";
+    throw InputError(msg);
+  }
+}
+
+// The part's outcome did not reach the store: where it is, on one line (stderr).
+void print_record(const PartResult& p, long long index) {
+  if (p.recorded.stored) return;
+  if (p.recorded.journaled)
+    std::fprintf(stderr, "marker: part %lld (id %lld): outcome %s kept in the outcome journal %s; the store did not "
+                         "take it (%s): it is recorded at the station's next start\n",
+                 index, static_cast<long long>(p.mark_id), std::string(to_string(p.outcome)).c_str(),
+                 p.recorded.journal.c_str(), p.recorded.error.c_str());
+  else
+    std::fprintf(stderr, "marker: part %lld (id %lld): outcome %s NOT recorded: %s\n", index,
+                 static_cast<long long>(p.mark_id), std::string(to_string(p.outcome)).c_str(),
+                 p.record_error.c_str());
+}
+
 }  // namespace
 
 int run_mark_job(const MarkJobArgs& a) {
@@ -67,6 +122,7 @@ int run_mark_job(const MarkJobArgs& a) {
   if (a.remark && (a.count != 1 || !a.sets.empty()))
     throw InputError("--remark " + std::to_string(*a.remark) +
                      " marks one part again with its recorded texts: --count and --set do not apply");
+  if (!a.reason.empty() && !a.remark) throw InputError("--reason applies to a re-mark: give --remark ID");
   std::string bytes;
   const JobFile job = read_job_file(a.job, &bytes);
   const auto variables = job_variables(job, parse_sets(a.sets));
@@ -78,25 +134,24 @@ int run_mark_job(const MarkJobArgs& a) {
   for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
   const InjectArg inject = a.inject.empty() ? InjectArg{} : parse_inject(a.inject);
 
+  // The store before the device: a store that refuses (damaged, a counter it does not know)
+  // is reported before anything is switched on.
+  StoreSettings settings;
+  settings.journal_dir = default_journal_dir();
+  settings.interrupts = interrupt_count;
+  settings.fault = inject.store;
+  auto store = open_production_store(a.store, a.remark ? StoreAccess::existing : StoreAccess::create,
+                                     std::move(settings), inject.store.has_value());
+  MarkContext context = mark_context(a.station, a.job, bytes);
+  context.now = SystemClock().now();
+  start_station(*store, context, job, a);
+
   SimSettings sim;
   sim.fault_at = inject.device_fault_at;
+  sim.virtual_time = a.virtual_time;
   const OpenedDevice opened = open_device(
       a.device.empty() ? job.device : a.device, object_spec(job, job.objects.front(), "", fonts), sim);
   Device& device = *opened.device;
-
-  const std::string where = store_location(a.store, a.job);
-  auto store = open_store(where, a.remark ? StoreAccess::existing : StoreAccess::create);
-  MarkContext context = mark_context(a.station, a.job, bytes);
-  context.now = SystemClock().now();
-  const std::vector<std::int64_t> closed = store->start_station(context);
-  if (!closed.empty()) {
-    std::string ids;
-    for (std::int64_t id : closed) ids.append(ids.empty() ? "" : ", ").append(std::to_string(id));
-    std::fprintf(stderr,
-                 "marker: station %s: %zu part(s) a previous run left without an outcome (id %s) "
-                 "recorded aborted; their numbers are void\n",
-                 context.station.c_str(), closed.size(), ids.c_str());
-  }
   PartRunner runner(job, fonts, variables, device, *store, context);
 
   PartOptions options;
@@ -104,6 +159,7 @@ int run_mark_job(const MarkJobArgs& a) {
   options.job.virtual_time = a.virtual_time;
   options.job.stop = &interrupt_flag();
   options.job.inject = inject.drain;
+  options.remark_reason = a.reason;
   bool warned_dots = false, warned_poor = false;
   for (long long i = 1; i <= a.count; ++i) {
     if (interrupt_flag().requested()) {
@@ -120,10 +176,13 @@ int run_mark_job(const MarkJobArgs& a) {
     } else {
       print_part(p, i, a.count);
     }
+    print_record(p, i);
+    if (!p.note.empty()) std::fprintf(stderr, "marker: warning: part %lld: %s\n", i, p.note.c_str());
     if (p.outcome != JobOutcome::done) {
       print_stop(p, i);
       return p.outcome == JobOutcome::aborted ? kExitInterrupted : 1;
     }
+    if (!p.recorded.stored && !p.recorded.journaled) return 1;  // not even the journal took it
     if (p.pulses && p.pulses->separate_dots() && !warned_dots) {
       warned_dots = true;
       std::fprintf(stderr,

@@ -1,13 +1,18 @@
 #pragma once
 // `marker mark --job FILE [--set NAME=VALUE …] [--count N] [--store PATH|URL] [--station NAME]
-//  [--remark ID] [--device D] [--inject KIND@N] [--virtual-time] [--json]`: the production
-// run — N parts in a row, each with its next serial numbers (marker/production/part_run.hpp), one line
-// or one JSON object (JSON Lines) per part. The run stops at the first part that does not end
-// done: Ctrl-C finishes that part with the laser off where it stopped, records it aborted and
-// exits 130; a failed part exits 1.
+//  [--create-counters] [--remark ID [--reason TEXT]] [--device D] [--inject KIND@N]
+//  [--virtual-time] [--json]`: the production run — N parts in a row, each with its next serial
+// numbers (marker/production/part_run.hpp), one line or one JSON object (JSON Lines) per part,
+// into the station's serial store (or --store). The run stops at the first part that does not
+// end done: Ctrl-C finishes that part with the laser off where it stopped, records it aborted
+// and exits 130; a failed part exits 1. A part whose outcome the store did not take still gets
+// its line (the outcome waits in the station's journal); if not even the journal took it the
+// run stops with exit 1.
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "marker/cli/production_options.hpp"
 
 namespace mark::cli {
 
@@ -15,9 +20,11 @@ struct MarkJobArgs {
   std::string job;
   std::vector<std::string> sets;
   long long count = 1;
-  std::string store;
+  StoreArgs store;
   std::string station;
+  bool create_counters = false;
   std::optional<long long> remark;
+  std::string reason;
   std::string device;  // empty: the job's
   std::string inject;
   bool virtual_time = false;

@@ -135,13 +135,19 @@ CLI::Option* add_setting(CLI::App& app, const Choice& s, std::string& value, std
 }
 
 CLI::Option* add_setting(CLI::App& app, const Toggle& s, bool& value, std::string_view prefix) {
-  value = false;
-  return app.add_flag(flag_of(s.name, prefix), value, setting_description(&s));
+  value = s.on;
+  std::string flag = flag_of(s.name, prefix);
+  if (s.on) flag += ",!--no-" + flag.substr(2);  // on unless turned off
+  return app.add_flag(flag, value, setting_description(&s));
 }
 
 CLI::Option* add_setting(CLI::App& app, const Text& s, std::string& value, std::string_view prefix) {
   if (!s.value.empty()) value = s.value;
   return app.add_option(flag_of(s.name, prefix), value, setting_description(&s));
+}
+
+CLI::Option* add_setting(CLI::App& app, const Text& s, std::optional<std::string>& value) {
+  return app.add_option(std::string(s.name.flag), value, setting_description(&s));
 }
 
 CLI::Option* add_setting(CLI::App& app, const Text& s, std::vector<std::string>& values) {

@@ -37,6 +37,8 @@ CLI::Option* add_setting(CLI::App& app, const Count& s, std::optional<long long>
 CLI::Option* add_setting(CLI::App& app, const Choice& s, std::string& value, std::string_view prefix = {});
 CLI::Option* add_setting(CLI::App& app, const Toggle& s, bool& value, std::string_view prefix = {});
 CLI::Option* add_setting(CLI::App& app, const Text& s, std::string& value, std::string_view prefix = {});
+// Text where given-but-empty differs from not given (`log --text ""`).
+CLI::Option* add_setting(CLI::App& app, const Text& s, std::optional<std::string>& value);
 // Repeatable text (--set NAME=VALUE …).
 CLI::Option* add_setting(CLI::App& app, const Text& s, std::vector<std::string>& values);
 // A setting whose range also depends on the head (a speed at most its positioning limit, the

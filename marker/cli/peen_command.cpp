@@ -1,5 +1,5 @@
 // `marker peen TEXT [--font 5x7|7x9|10x16|builtin|FILE] [layout options] [--planner ...]
-//  [--window WxH] [--pitch MM] [--preview FILE.svg] [--json] [--compare] [-o FILE.csv|FILE.ngc]
+//  [--window WxH] [--pitch MM] [--preview FILE.svg] [--json] [--quiet] [--compare] [-o FILE.csv|FILE.ngc]
 //  [gantry options]`: plans the needle path of a pin marker and times it on the simulated gantry.
 #include <algorithm>
 #include <cmath>
@@ -8,14 +8,15 @@
 
 #include "base/error.hpp"
 #include "marker/cli/commands.hpp"
+#include "marker/cli/console_progress.hpp"
 #include "marker/cli/gantry_options.hpp"
-#include "marker/cli/interrupt.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
 #include "marker/cli/output_options.hpp"
 #include "marker/cli/print.hpp"
 #include "marker/limits/peen_settings.hpp"
+#include "marker/cli/print.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/peen/dot_fonts.hpp"
 #include "marker/peen/dot_layout.hpp"
@@ -38,6 +39,7 @@ struct PeenArgs {
   std::string preview;
   std::string output;
   bool json = false;
+  bool quiet = false;
   bool compare = false;
   bool block_straight = false;
 };
@@ -128,11 +130,12 @@ int run_peen(const PeenArgs& a) {
   check_standard_output({{"--output", &a.output}, {"--preview", &a.preview}}, a.json);
   if (!a.output.empty()) check_output_path("--output", a.output, kPlanExtensions);
   if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
+  ConsoleProgress progress = command_progress(a.quiet || a.json);
   const GantryConfig gantry = to_gantry(a.gantry);
   const DotText dots = build_dots(a, gantry);
   const Box window = a.window.empty() ? tight_window(dots) : parse_window(a.window, a.layout.field_mm);
   require_inside(window, Field{a.layout.field_mm}, "the marking window");
-  const PeenSetup setup{window, gantry, !a.block_straight, &interrupt_flag()};
+  const PeenSetup setup{window, gantry, !a.block_straight, &progress};
   const PlannerKind chosen = *parse_planner(a.planner);
 
   PeenPlan plan = plan_peen(dots, chosen, setup);
@@ -148,6 +151,7 @@ int run_peen(const PeenArgs& a) {
       rows.push_back(run_to_json(other, dots, run_plan(other, gantry)));
     }
 
+  progress.writing_files();
   if (!a.output.empty()) export_plan(a.output, plan, dots, gantry);
   if (!a.preview.empty()) write_peen_preview(dots, plan, window, a.preview);
 
@@ -188,6 +192,7 @@ Command make_peen_command() {
         add_setting(*sub, kPitch, a->pitch_mm);
         sub->add_flag("--compare", a->compare, "time all three planners side by side");
         sub->add_flag("--json", a->json, "print the result as JSON");
+        sub->add_flag("--quiet", a->quiet, "no progress lines on stderr");
         sub->add_option("--preview", a->preview, "draw dots and needle path to FILE.svg or FILE.png");
         sub->add_option("-o,--output", a->output,
                         "write the plan as a move/strike list (FILE.csv) or G-code (FILE.ngc)");

@@ -1,8 +1,9 @@
-// `marker preview TEXT [layout options] -o FILE.svg|FILE.png [--no-travel] [--json]`
+// `marker preview TEXT [layout options] -o FILE.svg|FILE.png [--no-travel] [--json] [--quiet]`
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "marker/cli/commands.hpp"
+#include "marker/cli/console_progress.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/output_options.hpp"
@@ -19,6 +20,7 @@ Command make_preview_command() {
     std::string output;
     bool no_travel = false;
     bool json = false;
+    bool quiet = false;
   };
   auto a = std::make_shared<Args>();
   return Command(
@@ -30,15 +32,20 @@ Command make_preview_command() {
         sub->add_option("-o,--output", a->output, "output file, .svg or .png")->required();
         add_setting(*sub, kNoTravel, a->no_travel);
         sub->add_flag("--json", a->json, "print what was drawn as one JSON object (docs/json.md)");
+        sub->add_flag("--quiet", a->quiet, "no progress lines on stderr");
         return sub;
       },
       [a] {
         check_standard_output({{"--output", &a->output}}, a->json);
         check_output_path("--output", a->output, {".svg", ".png"});
+        ConsoleProgress progress = command_progress(a->quiet || a->json);
         const LaidOutText laid = build_figure(a->text, a->layout);
         PreviewOptions options;
+        options.progress = &progress;
         options.show_travel = !a->no_travel;
         options.circle = to_layout_options(a->layout).circle;
+        // The drawing stops at its own steps from here on; the file goes out whole at its end.
+        progress.writing_files();
         write_figure_preview(laid.figure, laid.field, a->output, options);
         const Box b = laid.figure.bounds();
         if (a->json) {

@@ -2,16 +2,42 @@
 
 #include <unistd.h>
 
+#include <filesystem>
+#include <iostream>
+
 #include "base/error.hpp"
+#include "marker/cli/option_ranges.hpp"
+#include "marker/limits/production_settings.hpp"
 #include "marker/store/digest.hpp"
 #include "marker/store/open_store.hpp"
 
 namespace mark::cli {
 
-std::string store_location(const std::string& store, const std::string& job) {
-  if (!store.empty()) return store;
-  if (!job.empty()) return default_store_path(job);
-  throw InputError("no serial store: give --job FILE (its store is the file next to it) or --store PATH|URL");
+CLI::Option* add_store_options(CLI::App& app, StoreArgs& a, bool marking) {
+  CLI::Option* store = app.add_option(
+      "--store", a.store, "serial store: SQLite file or postgresql://… (default: the station's, " + default_store_path() + ")");
+  add_setting(app, kStoreWait, a.wait_ms);
+  if (marking) add_setting(app, kStoreAttempts, a.attempts);
+  return store;
+}
+
+std::string store_location(const std::string& store) { return store.empty() ? default_store_path() : store; }
+
+std::unique_ptr<SerialStore> open_production_store(const StoreArgs& a, StoreAccess access, StoreSettings settings,
+                                                   bool fault_injection) {
+  const std::string where = store_location(a.store);
+  if (access == StoreAccess::create && a.store.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(std::filesystem::path(where).parent_path(), ec);
+    if (ec) throw InputError("the station's store folder " + station_state_dir() + ": " + ec.message());
+  }
+  StoreOptions options;
+  options.wait_ms = a.wait_ms;
+  options.fault_injection = fault_injection;
+  settings.retry.attempts = a.attempts;
+  auto store = open_store(where, access, std::move(settings), options);
+  std::cerr << "marker: store " << store->describe() << "\n";
+  return store;
 }
 
 std::map<std::string, std::string> parse_sets(const std::vector<std::string>& sets) {

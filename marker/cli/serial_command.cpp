@@ -1,17 +1,18 @@
-// `marker serial show NAME (--job FILE | --store PATH|URL) [--json]`
+// `marker serial create NAME [--start N] [--job FILE] [--store …] [--station S]`
+// `marker serial show NAME [--job FILE] [--store PATH|URL] [--json]`
 // `marker serial set NAME VALUE --job FILE [--store …] [--station S]`
 // `marker serial reserve NAME COUNT --job FILE [--store …] [--station S] [--json]`
-// Inspect and administer counters. The job gives the counter's rules (step, limit, resets);
-// setting a counter at or behind an already-issued value is refused; every set and reservation
-// is an audit row.
-#include <filesystem>
-#include <fstream>
+// Create, inspect and administer the counters of the station's store (or --store). A counter
+// exists only once created, so a renamed counter or a typo in a template is refused instead of
+// starting at 1. The job gives a counter's rules (start, step, limit, resets); setting a
+// counter at or behind an already-issued value is refused; every creation, set and reservation
+// is an audit row. `show` only reads (a read-only transaction; it works on a read-only file).
 #include <iostream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "base/error.hpp"
 #include "marker/cli/commands.hpp"
+#include "marker/cli/interrupt.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/production_options.hpp"
 #include "marker/limits/production_settings.hpp"
@@ -25,7 +26,9 @@ struct Args {
   std::string name;
   long long value = 0;
   long long count = 0;
-  std::string job, store, station;
+  std::optional<long long> start;
+  std::string job, station;
+  StoreArgs store;
   bool json = false;
 };
 
@@ -48,45 +51,66 @@ Loaded load(const Args& a, bool need_job) {
   return l;
 }
 
+StoreSettings settings() {
+  StoreSettings s;
+  s.interrupts = interrupt_count;
+  return s;
+}
+
 int show(const Args& a) {
   Loaded l = load(a, false);
-  const std::string where = store_location(a.store, a.job);
   const SysTime now = SystemClock().now();
   const ShiftTable shifts = l.job ? l.job->shifts : ShiftTable{};
-  CounterStatus st;
-  // Showing never creates a store: a job without one yet shows its counter's start.
-  if (!is_postgres_url(where) && !std::filesystem::exists(where)) {
-    if (!l.spec) throw StoreError("serial store " + where + " does not exist");
-    st.name = a.name;
-    st.state = CounterState::fresh(*l.spec, period_key(*l.spec, now, shifts));
-    if (auto p = peek(*l.spec, st.state, st.state.period)) st.next = p->value;
-  } else {
-    st = open_store(where, StoreAccess::existing)->status(a.name, l.spec, shifts, now);
-    if (!st.known && !l.spec) throw InputError("the store " + where + " has no counter \"" + a.name + "\"");
-  }
+  // Read-only: showing never creates a store, takes no write lock and works on a file this
+  // process cannot write.
+  auto store = open_production_store(a.store, StoreAccess::read_only, settings());
+  const CounterStatus st = store->status(a.name, l.spec, shifts, now);
+  if (!st.known)
+    throw InputError("the store " + store->describe() + " has no counter \"" + a.name +
+                     "\": create it with `marker serial create " + a.name + " [--start N]`");
   auto opt = [](const std::optional<std::int64_t>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
   if (a.json) {
     std::cout << nlohmann::json{{"name", a.name}, {"next", opt(st.next)},
                                 {"highest_issued", opt(st.highest_issued)},
                                 {"lowest_issued", opt(st.lowest_issued)},
                                 {"period", st.state.period}, {"cycle", st.state.cycle},
-                                {"store", where}}
+                                {"store", store->describe()}}
                      .dump()
               << "\n";
     return 0;
   }
   std::string next = st.next ? std::to_string(*st.next) : "none (the counter has passed its limit)";
   if (st.next && l.spec) next += " (\"" + l.spec->alphabet.format(*st.next, l.spec->width, l.spec->padding) + "\")";
-  std::printf("counter %s in %s\n  next %s\n  highest issued %s\n", a.name.c_str(), where.c_str(),
+  std::printf("counter %s in %s\n  next %s\n  highest issued %s\n", a.name.c_str(), store->describe().c_str(),
               next.c_str(), st.highest_issued ? std::to_string(*st.highest_issued).c_str() : "none");
   if (!st.state.period.empty()) std::printf("  period %s\n", st.state.period.c_str());
   if (st.state.cycle) std::printf("  cycle %lld (wrapped)\n", static_cast<long long>(st.state.cycle));
   return 0;
 }
 
+int create(const Args& a) {
+  Loaded l = load(a, false);
+  std::int64_t start = 1;
+  if (a.start) start = *a.start;
+  else if (l.spec) start = l.spec->start;
+  if (l.spec && l.spec->beyond(start))
+    throw InputError("serial create " + a.name + " --start " + std::to_string(start) +
+                     ": outside the counter's range in " + a.job + " (limit " +
+                     std::to_string(l.spec->effective_limit()) + ")");
+  auto store = open_production_store(a.store, StoreAccess::create, settings());
+  MarkContext ctx = mark_context(a.station, a.job, l.bytes);
+  ctx.now = SystemClock().now();
+  // With the job, the counter starts in the current reset period: the first part counts from
+  // `start`, not from the job's start of a "new" period.
+  const std::string period = l.spec ? period_key(*l.spec, ctx.now, l.job->shifts) : "";
+  store->create_counter(a.name, start, period, ctx);
+  std::printf("counter %s created: next value %lld\n", a.name.c_str(), static_cast<long long>(start));
+  return 0;
+}
+
 int set_or_reserve(const Args& a, bool reserve) {
   Loaded l = load(a, true);
-  auto store = open_store(store_location(a.store, a.job), StoreAccess::create);
+  auto store = open_production_store(a.store, StoreAccess::existing, settings());
   MarkContext ctx = mark_context(a.station, a.job, l.bytes);
   ctx.now = SystemClock().now();
   if (!reserve) {
@@ -110,17 +134,21 @@ int set_or_reserve(const Args& a, bool reserve) {
 
 Command make_serial_command() {
   auto a = std::make_shared<Args>();
-  auto subs = std::make_shared<std::array<CLI::App*, 3>>();
+  auto subs = std::make_shared<std::array<CLI::App*, 4>>();
   return Command(
       [=](CLI::App& app) {
-        auto* serial = app.add_subcommand("serial", "inspect and administer serial counters");
+        auto* serial = app.add_subcommand("serial", "create, inspect and administer serial counters");
         serial->require_subcommand(1);
         auto common = [&](CLI::App* s) {
           s->add_option("name", a->name, "counter name")->required();
-          s->add_option("--job", a->job, "job file (the counter's rules; its store is next to it)");
-          s->add_option("--store", a->store, "serial store: SQLite file or postgresql://…");
+          s->add_option("--job", a->job, "job file (the counter's rules)");
+          add_store_options(*s, a->store, false);
         };
-        auto* show = serial->add_subcommand("show", "the counter's next value and highest issued value");
+        auto* create = serial->add_subcommand("create", "create a counter in the store (a job's counters must be created before it marks)");
+        common(create);
+        add_setting(*create, kCreateStart, a->start);
+        add_setting(*create, kStation, a->station);
+        auto* show = serial->add_subcommand("show", "the counter's next value and highest issued value (read-only)");
         common(show);
         show->add_flag("--json", a->json, "print one JSON object (next, highest_issued)");
         auto* set = serial->add_subcommand("set", "make VALUE the counter's next value (never at or behind an issued one)");
@@ -132,12 +160,13 @@ Command make_serial_command() {
         add_setting(*reserve, kReserveCount, a->count)->required();
         add_setting(*reserve, kStation, a->station);
         reserve->add_flag("--json", a->json, "print the reserved values as JSON");
-        *subs = {show, set, reserve};
+        *subs = {create, show, set, reserve};
         return serial;
       },
       [=] {
-        if ((*subs)[0]->parsed()) return show(*a);
-        return set_or_reserve(*a, (*subs)[2]->parsed());
+        if ((*subs)[0]->parsed()) return create(*a);
+        if ((*subs)[1]->parsed()) return show(*a);
+        return set_or_reserve(*a, (*subs)[3]->parsed());
       });
 }
 

@@ -72,7 +72,7 @@ std::vector<std::string> comment_lines(const std::string& text, bool upper, std:
 
 class Writer {
  public:
-  Writer(const Toolpath& tp, const GcodeOptions& o) : tp_(tp), o_(o) {
+  Writer(const Toolpath& tp, const GcodeOptions& o, const Progress& progress) : tp_(tp), o_(o), progress_(progress) {
     const bool inch = o.units == Units::inch;
     dec_ = inch ? 5 : 4;
     feed_dec_ = inch ? 2 : 1;
@@ -102,6 +102,7 @@ class Writer {
  private:
   const Toolpath& tp_;
   const GcodeOptions& o_;
+  const Progress& progress_;
   const DialectLimits limits_ = dialect_limits(o_.dialect);
   int dec_ = 4, feed_dec_ = 1;
   double scale_ = 1;
@@ -128,7 +129,7 @@ class Writer {
                              std::to_string(limits_.line_chars));
     out_ += s;
     out_ += '\n';
-    ++stats_.lines;
+    if (++stats_.lines % 4096 == 0) progress_.step("gcode: writing lines", stats_.lines, 0);
   }
   void forget() {
     pos_.reset();
@@ -441,13 +442,14 @@ void validate(const GcodeOptions& o) {
     throw InputError("spindle speed must be 0 (off) or positive");
 }
 
-std::string write_gcode(const Toolpath& toolpath, const GcodeOptions& options, GcodeStats* stats) {
+std::string write_gcode(const Toolpath& toolpath, const GcodeOptions& options, GcodeStats* stats,
+                        const Progress& progress) {
   validate(options);
   if (options.dialect == Dialect::fanuc &&
       options.first_subprogram_number + static_cast<long>(toolpath.subs.size()) > 10000)
     throw InputError("too many subprograms for Fanuc O numbers from O" +
                      std::to_string(options.first_subprogram_number));
-  return Writer(toolpath, options).run(stats);
+  return Writer(toolpath, options, progress).run(stats);
 }
 
 DialectLimits dialect_limits(Dialect d) {

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <string>
 
+#include "base/progress.hpp"
 #include "marker/cnc/gcode_options.hpp"
 #include "marker/cnc/toolpath.hpp"
 
@@ -23,7 +24,8 @@ struct GcodeStats {
 };
 
 // Throws InputError when the dialect cannot express the toolpath (cutter compensation in plain).
+// `progress` hears every few thousand lines and may stop the writing (Interrupted).
 std::string write_gcode(const Toolpath& toolpath, const GcodeOptions& options,
-                        GcodeStats* stats = nullptr);
+                        GcodeStats* stats = nullptr, const Progress& progress = Progress::none());
 
 }  // namespace mark

@@ -50,7 +50,8 @@ void emit_component(std::vector<Component>& comps, std::size_t idx, std::vector<
 
 }  // namespace
 
-std::vector<PocketLoop> pocket_loops(const Paths& region, double stepover_mm, double arc_tol_mm) {
+std::vector<PocketLoop> pocket_loops(const Paths& region, double stepover_mm, double arc_tol_mm,
+                                     const Progress& progress) {
   // Inner loops only need to stay within a step-over of each other, not to hug a wall: they use
   // a coarser arc tolerance, and each level is offset from the previous one (eroding twice by
   // s is eroding by 2s), which keeps every offset small and fast.
@@ -59,6 +60,7 @@ std::vector<PocketLoop> pocket_loops(const Paths& region, double stepover_mm, do
   std::vector<std::size_t> first_of_level;
   Paths level_paths = region;
   for (int level = 0;; ++level) {
+    progress.step("pocket: offsetting loops, level", static_cast<std::size_t>(level), 0);
     PolyTree tree;
     if (level == 0) {
       Clipper c;  // the region itself, as a tree of outer boundaries and holes
@@ -92,8 +94,11 @@ std::vector<PocketLoop> pocket_loops(const Paths& region, double stepover_mm, do
 }
 
 void append_pocket_pass(const std::vector<PocketLoop>& loops, const Paths& region, double z,
-                        const PocketMoves& m, Point& at, bool& at_depth, std::vector<ToolMove>& out) {
-  for (const PocketLoop& loop : loops) {
+                        const PocketMoves& m, Point& at, bool& at_depth, std::vector<ToolMove>& out,
+                        const Progress& progress) {
+  for (std::size_t n = 0; n < loops.size(); ++n) {
+    progress.step("pocket: linking loops", n, loops.size());
+    const PocketLoop& loop = loops[n];
     if (loop.points.size() < 2) continue;
     // Enter the loop at its vertex nearest to the tool.
     std::size_t start = 0;

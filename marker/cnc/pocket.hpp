@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "base/progress.hpp"
 #include "fonts/box.hpp"
 #include "marker/cnc/toolpath.hpp"
 
@@ -20,7 +21,7 @@ struct PocketLoop {
 
 // The loops in cutting order (inside out per island, each island's children before it).
 std::vector<PocketLoop> pocket_loops(const ClipperLib::Paths& region, double stepover_mm,
-                                     double arc_tol_mm);
+                                     double arc_tol_mm, const Progress& progress = Progress::none());
 
 struct PocketMoves {
   double safe_z_mm = 5;
@@ -37,6 +38,6 @@ struct PocketMoves {
 // `at` is where the tool is (updated); `at_depth` whether it is down at z already.
 void append_pocket_pass(const std::vector<PocketLoop>& loops, const ClipperLib::Paths& region,
                         double z_mm, const PocketMoves& m, Point& at, bool& at_depth,
-                        std::vector<ToolMove>& out);
+                        std::vector<ToolMove>& out, const Progress& progress = Progress::none());
 
 }  // namespace mark

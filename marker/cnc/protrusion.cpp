@@ -51,7 +51,7 @@ std::vector<UncutRegion> uncut_regions(const Paths& material, const Paths& clear
 }  // namespace
 
 ProtrusionResult protrusion_toolpath(const Figure& figure, const CutSettings& s,
-                                     const ProtrusionSettings& ps) {
+                                     const ProtrusionSettings& ps, const Progress& progress) {
   validate(s);
   ProtrusionResult res;
   const double r = s.tool_diameter_mm / 2;
@@ -66,6 +66,7 @@ ProtrusionResult protrusion_toolpath(const Figure& figure, const CutSettings& s,
 
   const Paths strokes = stroke_polylines(figure, kChordTolMm);
   if (strokes.empty()) throw InputError("protrusion: the text has no strokes to leave standing");
+  progress.step("protrusion: growing the letters", 0, 0);
   res.letters = grow_strokes(strokes, res.stroke_width_mm / 2, kArcTolMm);
   const Paths keep_out = grow_strokes(strokes, res.stroke_width_mm / 2 + r + kKeepOutSlackMm, kArcTolMm);
 
@@ -76,8 +77,10 @@ ProtrusionResult protrusion_toolpath(const Figure& figure, const CutSettings& s,
   Box inset = res.plate;
   inset.min += Point(r, r);
   inset.max -= Point(r, r);
+  progress.step("protrusion: the tool-centre region", 0, 0);
   res.tool_region = difference({rectangle_nm(inset)}, keep_out);
   res.cleared = offset_region(res.tool_region, r, kArcTolMm);
+  progress.step("protrusion: material the tool cannot reach", 0, 0);
   res.uncut = uncut_regions(difference({rectangle_nm(res.plate)}, res.letters), res.cleared, res.uncut_region);
 
   // The deepest point of the pocket is at most half the inset plate's shorter side from a wall.
@@ -87,7 +90,7 @@ ProtrusionResult protrusion_toolpath(const Figure& figure, const CutSettings& s,
                      " nested loops at a step-over of " + mm(res.stepover_mm) + ", more than " +
                      std::to_string(static_cast<int>(kMaxPocketLoops)) +
                      "; raise the step-over or narrow the margin");
-  std::vector<PocketLoop> loops = pocket_loops(res.tool_region, res.stepover_mm, kArcTolMm);
+  std::vector<PocketLoop> loops = pocket_loops(res.tool_region, res.stepover_mm, kArcTolMm, progress);
   std::vector<CompContour> walls;
   if (ps.cutter_comp) {
     // The walls go to the control as part contours; only the inner loops stay tool-centre paths.
@@ -109,7 +112,7 @@ ProtrusionResult protrusion_toolpath(const Figure& figure, const CutSettings& s,
   Point at = res.plate.min;
   bool at_depth = false;
   for (double z : pass_depths(s)) {
-    append_pocket_pass(loops, res.tool_region, z, pm, at, at_depth, moves);
+    append_pocket_pass(loops, res.tool_region, z, pm, at, at_depth, moves, progress);
     append_comp_contours(walls, res.tool_region, z, pm, at, at_depth, moves);
   }
   moves.push_back(ToolMove::rapid(at.x(), at.y(), s.safe_z_mm));

@@ -12,6 +12,7 @@
 
 #include <vector>
 
+#include "base/progress.hpp"
 #include "marker/cnc/cut_settings.hpp"
 #include "marker/cnc/toolpath.hpp"
 #include "marker/layout/figure.hpp"
@@ -51,6 +52,7 @@ struct ProtrusionResult {
 
 // Throws InputError for impossible settings (step-over above the tool radius, nothing to cut).
 ProtrusionResult protrusion_toolpath(const Figure& figure, const CutSettings& settings,
-                                     const ProtrusionSettings& protrusion);
+                                     const ProtrusionSettings& protrusion,
+                                     const Progress& progress = Progress::none());
 
 }  // namespace mark

@@ -1,6 +1,7 @@
 #include "marker/cnc/toolpath.hpp"
 
 #include <Eigen/Geometry>
+#include <optional>
 
 #include "fonts/overloaded.hpp"
 
@@ -25,6 +26,21 @@ std::vector<ToolMove> expand_moves(const Toolpath& toolpath) {
                           }},
                step);
   return out;
+}
+
+RapidTravel rapid_travel(const Toolpath& toolpath) {
+  RapidTravel t;
+  std::optional<Eigen::Vector3d> at;
+  bool cutting = false;
+  for (const ToolMove& m : expand_moves(toolpath)) {
+    if (m.kind == MoveKind::rapid && at) {
+      if (cutting) t.xy_mm += (m.end.head<2>() - at->head<2>()).norm();
+      if (at->z() < 0 && m.end.z() > at->z()) ++t.retracts;
+    }
+    cutting = cutting || (m.kind != MoveKind::rapid && m.end.z() < 0);
+    at = m.end;
+  }
+  return t;
 }
 
 }  // namespace mark

@@ -63,4 +63,13 @@ ToolMove place_move(const ToolMove& move, const SubprogramCall& call);
 // Every move of the toolpath in field coordinates, subprogram calls expanded.
 std::vector<ToolMove> expand_moves(const Toolpath& toolpath);
 
+// How much the tool travels without cutting: the XY length of the rapid moves from the first cut
+// on (the way to the first cut depends on where the operator left the spindle), and how often it
+// lifts out of the work (a rapid that rises from below the surface).
+struct RapidTravel {
+  double xy_mm = 0;
+  std::size_t retracts = 0;
+};
+RapidTravel rapid_travel(const Toolpath& toolpath);
+
 }  // namespace mark

@@ -10,5 +10,7 @@
 namespace mark {
 
 nlohmann::json code_to_json(const PlacedCode& code, const CodeSpec& spec, const CodeVerification& v);
+// The ISO/IEC TR 29158 grade of a 2-D code (code_to_json's "iso").
+nlohmann::json iso_grade_json(const IsoGrade& grade);
 
 }  // namespace mark

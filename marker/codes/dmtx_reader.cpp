@@ -13,9 +13,18 @@ namespace {
 
 double distance(const DmtxVector2& a, const DmtxVector2& b) { return std::hypot(a.X - b.X, a.Y - b.Y); }
 
-}  // namespace
+class DmtxReader final : public CodeReader {
+ public:
+  std::string_view name() const override { return "libdmtx"; }
+  bool supports(Symbology s, int rows, int cols) const override {
+    // libdmtx 0.7.7 interleaves the 144 × 144 symbol's blocks its own way and cannot read the
+    // standard's (every perfect 144 × 144 zint mark reads "not decoded"; ZXing reads them).
+    return (s == Symbology::datamatrix || s == Symbology::gs1_datamatrix) && !(rows == 144 && cols == 144);
+  }
+  ReadResult read(const GreyImage& image, const SymbolInfo& symbol) const override;
+};
 
-ReadResult read_datamatrix(const CameraImage& image, int rows, int cols) {
+ReadResult DmtxReader::read(const GreyImage& image, const SymbolInfo& symbol) const {
   ReadResult r;
   r.reader = "libdmtx";
   std::vector<unsigned char> pixels(image.grey.begin(), image.grey.end());
@@ -41,8 +50,8 @@ ReadResult read_datamatrix(const CameraImage& image, int rows, int cols) {
       dmtxMatrix3VMultiply(&a, &p00, reg->fit2raw);
       dmtxMatrix3VMultiply(&b, &p10, reg->fit2raw);
       dmtxMatrix3VMultiply(&c, &p01, reg->fit2raw);
-      const int sr = reg->symbolRows > 0 ? reg->symbolRows : rows;
-      const int sc = reg->symbolCols > 0 ? reg->symbolCols : cols;
+      const int sr = reg->symbolRows > 0 ? reg->symbolRows : symbol.rows;
+      const int sc = reg->symbolCols > 0 ? reg->symbolCols : symbol.cols;
       r.module_x_px = distance(a, b) / sc;
       r.module_y_px = distance(a, c) / sr;
       dmtxMessageDestroy(&msg);
@@ -52,6 +61,13 @@ ReadResult read_datamatrix(const CameraImage& image, int rows, int cols) {
   dmtxDecodeDestroy(&dec);
   dmtxImageDestroy(&img);
   return r;
+}
+
+}  // namespace
+
+const CodeReader& dmtx_reader() {
+  static const DmtxReader reader;
+  return reader;
 }
 
 }  // namespace mark

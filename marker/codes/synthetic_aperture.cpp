@@ -5,7 +5,7 @@
 
 namespace mark {
 
-CameraImage synthetic_aperture(const CameraImage& image, double diameter_px) {
+GreyImage synthetic_aperture(const GreyImage& image, double diameter_px) {
   const double r = diameter_px / 2;
   if (r < 0.5) return image;
   // The disc as row offsets with their half widths, pixels whose centres lie inside.
@@ -20,7 +20,7 @@ CameraImage synthetic_aperture(const CameraImage& image, double diameter_px) {
     for (int x = 0; x < w; ++x)
       prefix[static_cast<std::size_t>(y) * (w + 1) + x + 1] =
           prefix[static_cast<std::size_t>(y) * (w + 1) + x] + image.at(x, y);
-  CameraImage out = image;
+  GreyImage out = image;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       std::int64_t sum = 0, n = 0;

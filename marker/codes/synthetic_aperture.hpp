@@ -4,10 +4,10 @@
 // symbol the way a reader's optics of that resolution would — gaps between dots or lines much
 // narrower than the aperture close, specks vanish. TR 29158 sizes the aperture at 50 %–80 % of
 // the module.
-#include "driver/sim/part_image.hpp"
+#include "base/grey_image.hpp"
 
 namespace mark {
 
-CameraImage synthetic_aperture(const CameraImage& image, double diameter_px);
+GreyImage synthetic_aperture(const GreyImage& image, double diameter_px);
 
 }  // namespace mark

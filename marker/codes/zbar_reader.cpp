@@ -1,6 +1,7 @@
 // ZBar: QR and Code 128 (GS1-128 too: ZBar reports its FNC1 separators as GS and drops the
 // leading FNC1, flagging the symbol as GS1). Binary mode keeps QR byte data as bytes instead of
-// guessing a text encoding.
+// guessing a text encoding. ZBar scans along rows and columns: a linear code must reach it with
+// its bars upright (verify.cpp turns the picture back by the code's angle).
 #include <zbar.h>
 
 #include <algorithm>
@@ -27,13 +28,21 @@ double side(const zbar_symbol_t* s, unsigned a, unsigned b) {
                     zbar_symbol_get_loc_y(s, a) - zbar_symbol_get_loc_y(s, b));
 }
 
-}  // namespace
+class ZbarReader final : public CodeReader {
+ public:
+  std::string_view name() const override { return "zbar"; }
+  bool supports(Symbology s, int, int) const override {
+    return s == Symbology::qr || s == Symbology::code128 || s == Symbology::gs1_128;
+  }
+  ReadResult read(const GreyImage& image, const SymbolInfo& symbol) const override;
+};
 
-ReadResult read_with_zbar(const CameraImage& image, Symbology symbology, int rows, int cols) {
+ReadResult ZbarReader::read(const GreyImage& image, const SymbolInfo& symbol) const {
   ReadResult r;
   r.reader = "zbar";
+  if (!supports(symbol.symbology, symbol.rows, symbol.cols)) return r;
   std::unique_ptr<zbar_image_scanner_t, ScannerDeleter> scanner(zbar_image_scanner_create());
-  const zbar_symbol_type_t type = symbology == Symbology::qr ? ZBAR_QRCODE : ZBAR_CODE128;
+  const zbar_symbol_type_t type = symbol.symbology == Symbology::qr ? ZBAR_QRCODE : ZBAR_CODE128;
   zbar_image_scanner_set_config(scanner.get(), ZBAR_NONE, ZBAR_CFG_ENABLE, 0);
   zbar_image_scanner_set_config(scanner.get(), type, ZBAR_CFG_ENABLE, 1);
   zbar_image_scanner_set_config(scanner.get(), type, ZBAR_CFG_BINARY, 1);
@@ -47,16 +56,16 @@ ReadResult read_with_zbar(const CameraImage& image, Symbology symbology, int row
     r.decoded = true;
     r.data.assign(zbar_symbol_get_data(s), zbar_symbol_get_data_length(s));
     const unsigned n = zbar_symbol_get_loc_size(s);
-    if (symbology == Symbology::qr && n == 4) {
+    if (symbol.symbology == Symbology::qr && n == 4) {
       // The four corners of the symbol, in order around it.
-      r.module_y_px = (side(s, 0, 1) + side(s, 3, 2)) / 2 / rows;
-      r.module_x_px = (side(s, 0, 3) + side(s, 1, 2)) / 2 / cols;
+      r.module_y_px = (side(s, 0, 1) + side(s, 3, 2)) / 2 / symbol.rows;
+      r.module_x_px = (side(s, 0, 3) + side(s, 1, 2)) / 2 / symbol.cols;
     } else if (n >= 2) {
       // ZBar leaves the two ends of each scan line across the bars as consecutive points (the
       // symbol's first and last bar edge): the longest such pair is the symbol's width.
       double width = 0;
       for (unsigned k = 0; k + 1 < n; ++k) width = std::max(width, side(s, k, k + 1));
-      r.module_x_px = width / cols;
+      r.module_x_px = width / symbol.cols;
     }
     break;
   }
@@ -64,10 +73,11 @@ ReadResult read_with_zbar(const CameraImage& image, Symbology symbology, int row
   return r;
 }
 
-ReadResult read_code(const CameraImage& image, Symbology symbology, int rows, int cols) {
-  if (symbology == Symbology::datamatrix || symbology == Symbology::gs1_datamatrix)
-    return read_datamatrix(image, rows, cols);
-  return read_with_zbar(image, symbology, rows, cols);
+}  // namespace
+
+const CodeReader& zbar_reader() {
+  static const ZbarReader reader;
+  return reader;
 }
 
 }  // namespace mark

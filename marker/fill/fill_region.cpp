@@ -22,21 +22,11 @@ FillRegion make_fill_region(const std::vector<Contour>& contours, FillRule rule,
   region.chord_tolerance_mm = chord_tolerance_mm;
   Paths polygons;
   for (const Contour& c : contours) {
-    Path p;
-    for (const Element& e : c.elements) {
-      region.sources.push_back(e);
-      const std::vector<Point> pts = flatten_element(e, chord_tolerance_mm);
-      for (std::size_t k = 0; k + 1 < pts.size(); ++k) {  // the next element starts on the end
-        const IntPoint q = to_nm(pts[k]);
-        if (p.empty() || p.back() != q) p.push_back(q);
-      }
-    }
+    region.sources.insert(region.sources.end(), c.elements.begin(), c.elements.end());
+    Path p = loop_polygon(c.elements, chord_tolerance_mm);
     if (p.size() >= 3) polygons.push_back(std::move(p));
   }
-  const PolyFillType type = rule == FillRule::non_zero ? pftNonZero : pftEvenOdd;
-  Clipper c;
-  c.AddPaths(polygons, ptSubject, true);
-  c.Execute(ctUnion, region.area, type, type);
+  region.area = union_polygons(polygons, rule == FillRule::even_odd);
   return region;
 }
 

@@ -48,6 +48,28 @@ Paths stroke_polylines(const Figure& figure, double chord_tol_mm) {
   return out;
 }
 
+Path loop_polygon(const std::vector<Element>& loop, double chord_tol_mm) {
+  Path p;
+  for (const Element& e : loop) {
+    const std::vector<Point> pts = flatten_element(e, chord_tol_mm);
+    for (std::size_t k = 0; k + 1 < pts.size(); ++k) {  // the next element starts on the end
+      const IntPoint q = to_nm(pts[k]);
+      if (p.empty() || p.back() != q) p.push_back(q);
+    }
+  }
+  return p;
+}
+
+Paths union_polygons(const Paths& polygons, bool even_odd) {
+  const PolyFillType type = even_odd ? pftEvenOdd : pftNonZero;
+  Clipper c;
+  c.StrictlySimple(true);
+  c.AddPaths(polygons, ptSubject, true);
+  Paths out;
+  c.Execute(ctUnion, out, type, type);
+  return out;
+}
+
 namespace {
 // Round-joined offset by delta (mm) of open strokes or closed regions, in nanometres.
 Paths round_offset(const Paths& paths, EndType ends, double delta_mm, double arc_tol_mm) {

@@ -28,6 +28,14 @@ void append_glyph_polylines(const PlacedGlyph& glyph, double chord_tol_mm, Clipp
 ClipperLib::Paths grow_strokes(const ClipperLib::Paths& strokes, double radius_mm,
                                double arc_tol_mm);
 
+// A closed loop of elements (ending where it starts) flattened within chord_tol_mm, as one
+// polygon without repeated points (fewer than 3 points: a loop that encloses nothing).
+ClipperLib::Path loop_polygon(const std::vector<Element>& loop, double chord_tol_mm);
+
+// The union of closed polygons under the non-zero (TrueType, CFF) or even-odd rule: strictly
+// simple polygons, outer boundaries counter-clockwise (positive area), holes clockwise.
+ClipperLib::Paths union_polygons(const ClipperLib::Paths& polygons, bool even_odd);
+
 // Closed polygons offset by delta_mm (negative shrinks), round joins.
 ClipperLib::Paths offset_region(const ClipperLib::Paths& region, double delta_mm, double arc_tol_mm);
 

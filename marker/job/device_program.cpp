@@ -92,6 +92,7 @@ Plan plan_for_device(const Figure& figure, const Pen& pen, StrokeOrder order) {
                      "board runs its own clock and speed ramps");
   Pen p = pen;
   if (p.corner == CornerStrategy::delays) p.corner = CornerStrategy::none;  // the board waits
+  p.whole_tick_speeds = false;  // the board's own ticks; one speed word per pen
   Plan plan = plan_figure(figure, p, order);
   plan.pen = pen;  // the delays the board will apply, reported with the plan
   return plan;

@@ -28,6 +28,7 @@
 #include "fonts/stroke_font.hpp"
 #include "marker/codes/code_object.hpp"
 #include "marker/codes/verify.hpp"
+#include "marker/job/code_photo.hpp"
 #include "marker/fill/fill_options.hpp"
 #include "marker/layout/layout.hpp"
 #include "marker/plan/plan.hpp"
@@ -44,7 +45,7 @@ struct JobSpec {
   LayoutOptions layout;
   std::optional<FillOptions> fill;  // outline-font letters hatch-filled (marker/fill)
   std::vector<CodeObject> codes;    // codes marked after the text (marker/codes)
-  VerifyOptions verify;             // material and reader for reading the codes back
+  CodeCheckOptions verify;          // material, camera and readers for reading the codes back
   HeadModel head = head_sl10();
   Pen pen;
   LaserSettings laser;  // the pen's laser source settings

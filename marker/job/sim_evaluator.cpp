@@ -1,6 +1,7 @@
 #include "marker/job/sim_evaluator.hpp"
 
 #include "marker/codes/verify.hpp"
+#include "marker/job/code_photo.hpp"
 #include "marker/job/intended_strokes.hpp"
 #include "marker/job/job_run.hpp"
 #include "marker/job/simulate_plan.hpp"
@@ -45,7 +46,7 @@ SimScannerOptions simulator_options(const JobSpec& spec) { return simulator_opti
 std::vector<CodeVerification> verify_codes(const JobSpec& spec, const CompiledJob& job, const DoseRaster& dose) {
   std::vector<CodeVerification> out;
   for (std::size_t k = 0; k < job.codes.size(); ++k)
-    out.push_back(verify_code(job.codes[k], spec.codes[k].spec, dose, spec.verify));
+    out.push_back(check_code(job.codes[k], spec.codes[k].spec, dose, spec.verify));
   return out;
 }
 

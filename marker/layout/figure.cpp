@@ -2,6 +2,8 @@
 
 #include <Eigen/Geometry>
 
+#include "fonts/stroke_join.hpp"
+
 namespace mark {
 
 Affine PlacedGlyph::placement() const {
@@ -17,6 +19,10 @@ Box Figure::bounds() const {
     for (const Element& e : g.elements)
       if (e.laser()) b.add(e.bounds());
   return b;
+}
+
+double Figure::join_tolerance_mm() const {
+  return join_tolerance(letter_height_mm > 0 ? letter_height_mm : bounds().height());
 }
 
 std::size_t Figure::element_count() const {

@@ -36,6 +36,12 @@ struct PlacedGlyph {
 struct Figure {
   std::vector<ShapedGlyph> shapes;
   std::vector<PlacedGlyph> glyphs;
+  // The requested character (cap) height, mm; 0 in figures not made by the layout.
+  double letter_height_mm = 0;
+
+  // Within this distance two element ends are one point (fonts/stroke_join.hpp): the shared
+  // fraction of the letter height, or of the drawing's height in a figure without one.
+  double join_tolerance_mm() const;
 
   // Bounds of all lit elements, mm.
   Box bounds() const;

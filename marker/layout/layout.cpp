@@ -192,6 +192,7 @@ void relayout_text(std::string_view utf8_text, const StrokeFont& font, const Lay
   figure.glyphs.clear();
   figure.glyphs.reserve(text.size());
   Shaper shaper(font, o, figure);
+  figure.letter_height_mm = o.height_mm;
   const double pitch = o.line_spacing * font.metrics().line_height * o.height_mm /
                        font.metrics().standard_height;
 

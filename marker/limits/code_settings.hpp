@@ -44,16 +44,28 @@ inline constexpr Quantity kLineWidth{
     {0.001, 15, "mm"}, 0.04};
 inline constexpr Quantity kLineSpeed{
     {"--line-speed", "", "material: speed of that reference line"}, {1, 100000, "mm/s"}, 1000};
-inline constexpr Quantity kPixelsPerModule{
-    {"--pixels-per-module", "", "code reader: camera pixels per module"}, {3, 20, ""}, 7};
 inline constexpr Quantity kAperture{
-    {"--aperture", "", "code reader: synthetic aperture"}, {0, 1.5, "modules"}, 0.5};
+    {"--aperture", "", "code verifier: synthetic aperture"}, {0, 1.5, "modules"}, 0.5};
+// The camera's own values are KEY=VALUE items of one option (marker/limits/camera_limits.hpp).
+inline constexpr Text kCamera{
+    {"--camera", "",
+     "code reader's camera: KEY=VALUE,… (keys: pixel_um, f_number, defocus_um, falloff_pct, full_well_ke, "
+     "read_noise_grey, seed, bare_reflectance, mark_reflectance, tone_ratio, grain_pct, …; docs/codes.md)"},
+    {}, "a fixed-mount DPM reader's (docs/codes.md)"};
+inline constexpr Choice kCodeReader{
+    {"--reader", "", "code reader that decides"}, "zxing, libdmtx, zbar", {},
+    "any two that read the symbology agree"};
+// What the read-back must grade (ISO/IEC TR 29158 overall grade).
+inline constexpr Choice kRequireGrade{
+    {"--require-grade", "",
+     "the least grade every code must read at (ISO/IEC TR 29158; `mark`: refused before firing, `code`: exit 2)"},
+    "A, B, C, D", {}, "none"};
 
 inline constexpr SettingRef kCodeSettingList[] = {
     &kCodeEscapes, &kCodeSize,  &kModule,       &kBarHeight, &kMatrixSize,    &kMatrixShape,
     &kQrEcc,       &kQrVersion, &kModuleStyle,  &kDotShape,  &kDotSize,       &kCodeInvert,
     &kCodeX,       &kCodeY,     &kCodeAngle,    &kBeamDiameter, &kLineWidth,  &kLineSpeed,
-    &kPixelsPerModule, &kAperture};
+    &kAperture,    &kCamera,   &kCodeReader, &kRequireGrade};
 inline constexpr SettingTable kCodeSettings{"code", "Code", "objects[]", kCodeSettingList};
 
 }  // namespace mark

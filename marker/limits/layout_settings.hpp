@@ -25,6 +25,10 @@ inline constexpr Choice kAlign{{"--align", "align", "alignment of each line abou
 inline constexpr Bounds kPositionBounds{-10000, 10000, "mm"};
 inline constexpr Quantity kX{{"--x", "x_mm", "base point x (field frame; inside the field)"}, kPositionBounds, 0};
 inline constexpr Quantity kY{{"--y", "y_mm", "base point y (first baseline; inside the field)"}, kPositionBounds, 0};
+// A milling machine's text (`marker gcode`): no galvo field, the work coordinates inside the travel.
+inline constexpr Quantity kWorkX{{"--x", "", "base point x (work coordinates; inside the --travel)"}, kPositionBounds, 0};
+inline constexpr Quantity kWorkY{
+    {"--y", "", "base point y (first baseline; work coordinates; inside the --travel)"}, kPositionBounds, 0};
 inline constexpr Bounds kAngleBounds{-360, 360, "degrees"};
 inline constexpr Quantity kAngle{
     {"--angle", "angle_deg", "inclined fitting: rotate the text about the base point"}, kAngleBounds, 0};
@@ -46,6 +50,14 @@ inline constexpr Toggle kInside{
     {"--inside", "circle.inside", "circular fitting: letters inside the circle, reading along its bottom"}};
 // Beyond ±75° the shear slants a letter more than 3.7 times its height sideways.
 inline constexpr Quantity kItalic{{"--italic", "italic_deg", "font inclination (shear)"}, {-75, 75, "degrees"}, 0};
+// F-Engrave's spacing, in % of the character height: letters may overlap by up to half the
+// height, or stand ten heights apart; a space from nothing to ten heights.
+inline constexpr Quantity kCharSpacing{
+    {"--char-spacing", "", "gap after each letter's drawing, % of the character height (F-Engrave's character spacing)"},
+    {-50, 1000, "% of the character height"}, {}, "the font's own"};
+inline constexpr Quantity kWordSpacing{
+    {"--word-spacing", "", "advance of a space, % of the character height"}, {0, 1000, "% of the character height"}, {},
+    "the font's own"};
 inline constexpr Toggle kMirror{
     {"--mirror", "mirror", "mirror the text (reverse the letter order, mirror each letter)"}};
 inline constexpr Toggle kReplaceMissing{
@@ -57,6 +69,7 @@ inline constexpr Choice kOrder{
 inline constexpr SettingRef kLayoutSettingList[] = {
     &kFont,   &kHeight,  &kWidthFactor, &kGap,    &kLineSpacing, &kAlign,  &kX,        &kY,
     &kAngle,  &kCircle,  &kCircleX,     &kCircleY, &kCircleRadius, &kStartAngle, &kSelfCentred, &kInside,
+    &kWorkX,  &kWorkY,    &kCharSpacing, &kWordSpacing,
     &kItalic, &kMirror,  &kReplaceMissing, &kOrder};
 inline constexpr SettingTable kLayoutSettings{"layout", "Layout of a text object", "objects[]", kLayoutSettingList};
 

@@ -102,10 +102,15 @@ inline constexpr Quantity kFfLag{{"--ff-lag-us", "", "feed-forward: the model's 
 inline constexpr Quantity kFfInertia{{"--ff-inertia-us2", "", "feed-forward: the model's 1/ωn² (0: first order)"},
                                      {0, 1e10, "µs²"}, {}, "feed-forward: 1/ωn² (second order)"};
 
-// The laser source.
+// The laser source (driver/laser_source.hpp: each one's limits).
+inline constexpr Choice kLaserSource{
+    {"--source", "source", "laser source: fiber (Q-switched), mopa, co2, uv"}, "fiber, mopa, co2, uv", "fiber"};
 inline constexpr Quantity kPower{{"--power", "power_pct", "laser power, % of the source"}, {0, 100, "%"}, 100};
-inline constexpr Quantity kFrequency{{"--frequency", "frequency_khz", "pulse repetition rate (Q-switch)"},
-                                     {0.1, 10000, "kHz"}, 30};
+// The widest any source runs (driver/laser_source.hpp: MOPA 1 .. 4000 kHz); each source's own
+// range is checked against the pen's source.
+inline constexpr Quantity kFrequency{
+    {"--frequency", "frequency_khz", "pulse repetition rate (Q-switch; each source runs its own range, docs/lmc.md)"},
+    {1, 4000, "kHz"}, 30};
 inline constexpr Quantity kPulseWidth{
     {"--pulse-width", "pulse_width_ns", "MOPA pulse width (0: the source's default; LMC --source mopa)"},
     {0, 1e6, "ns"}, 0};
@@ -120,7 +125,7 @@ inline constexpr SettingRef kPenSettingList[] = {
     &kLaserOnDelay, &kLaserOffDelay, &kJumpDelay,   &kJumpSettle, &kMarkDelay,   &kPolygonDelay, &kBlankAngle,
     &kRunIn,       &kMinRunIn,       &kRunOut,      &kSettle,     &kJoinSpeed,   &kTrackingError, &kAccel,
     &kJumpAccel,   &kCurveAccel,     &kAccelLimit,  &kJunctionDv, &kLaserSwitchSpeed, &kMinLitSpeed, &kFfLag,
-    &kFfInertia,   &kPower,          &kFrequency,   &kPulseWidth, &kPasses};
+    &kFfInertia,   &kPower,          &kFrequency,   &kPulseWidth, &kLaserSource, &kPasses};
 inline constexpr SettingTable kPenSettings{"pen", "Pen", "pens.NAME", kPenSettingList};
 
 }  // namespace mark

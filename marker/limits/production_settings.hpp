@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "marker/limits/setting.hpp"
+#include "marker/limits/store_limits.hpp"
 
 namespace mark {
 
@@ -86,8 +87,14 @@ inline constexpr Count kPartCount{
     {"--count", "", "--job: parts to mark, each with its next serial numbers"}, {1, 1'000'000'000}, 1};
 inline constexpr Count kRemark{
     {"--remark", "", "--job: mark the part of audit row ID again (no number consumed)"}, {1, INT64_MAX}};
+inline constexpr Text kRemarkReason{
+    {"--reason", "", "--job --remark: why the part is marked again (kept in the audit log)"}, {}, "none"};
+inline constexpr Toggle kCreateCounters{
+    {"--create-counters", "", "--job: create the job's counters the store does not know, each at its start"}};
 inline constexpr Text kStation{
     {"--station", "", "station name in the audit log; one process per station and store"}, {}, "the host name"};
+inline constexpr Count kCreateStart{
+    {"--start", "", "serial create: its first value"}, kCounterValueRange, {}, "the job's start, else 1"};
 inline constexpr Count kSerialValue{{"value", "", "serial set: the counter's next value"}, kCounterValueRange};
 // One reservation issues at most this many values (one audit row each).
 inline constexpr Count kReserveCount{{"count", "", "serial reserve: how many values to issue"}, {1, 1'000'000}};
@@ -96,8 +103,28 @@ inline constexpr Text kSince{
      "log: rows from this UTC time on: 2026-03-05, 2026-03-05T06:00, or back from now: 90m, 12h, 7d"},
     {}, "every row"};
 
-inline constexpr SettingRef kRunSettingList[] = {&kSet,         &kPartCount,    &kRemark, &kStation,
-                                                 &kSerialValue, &kReserveCount, &kSince};
+inline constexpr Count kLogLimit{{"--limit", "", "log: only the last N rows that match"}, {1, 1'000'000'000}, {},
+                                 "every row"};
+inline constexpr Text kLogSerial{
+    {"--serial", "", "log: rows that consumed this value: VALUE or COUNTER=VALUE (and their re-marks)"}, {}, "any"};
+inline constexpr Text kLogText{
+    {"--text", "", "log: rows that marked exactly this text in an object with a serial field (and their re-marks)"},
+    {}, "any"};
+inline constexpr Toggle kQuickCheck{
+    {"--quick", "", "store check: PRAGMA quick_check only (what every station start runs)"}};
+// The store (store_limits.hpp keeps the library's own defaults equal to these).
+inline constexpr Count kStoreWait{
+    {"--store-wait-ms", "",
+     "longest wait for a store another process holds locked (SQLite) or a row lock (PostgreSQL), ms"},
+    kStoreWaitMsRange, kStoreWaitMsDefault};
+inline constexpr Count kStoreAttempts{
+    {"--store-attempts", "",
+     "attempts of an allocation or an outcome write before giving up (the outcome stays in the station's journal)"},
+    kStoreAttemptsRange, kStoreAttemptsDefault};
+
+inline constexpr SettingRef kRunSettingList[] = {&kSet,         &kPartCount,    &kRemark,   &kRemarkReason, &kCreateCounters, &kStation,
+                                                 &kCreateStart, &kSerialValue, &kReserveCount, &kSince,    &kLogLimit,
+                                                 &kLogSerial,   &kLogText,      &kStoreWait, &kStoreAttempts, &kQuickCheck};
 inline constexpr SettingTable kRunSettings{"run", "Production run and serial store", "", kRunSettingList};
 
 }  // namespace mark

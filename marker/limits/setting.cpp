@@ -70,7 +70,7 @@ std::string default_text(const SettingRef& s) {
         using T = std::remove_cvref_t<decltype(*p)>;
         std::optional<std::string> given;
         if constexpr (std::is_same_v<T, Toggle>) {
-          return "off";
+          return p->on ? "on" : "off";
         } else {
           if constexpr (std::is_same_v<T, Quantity>) {
             if (p->value) given = format_number(*p->value);

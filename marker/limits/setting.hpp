@@ -71,9 +71,10 @@ struct Choice {
   bool allows(std::string_view name) const;
 };
 
-// On or off; off unless given.
+// On or off: off unless given, or (`on`) on unless turned off with its --no- form.
 struct Toggle {
   SettingName name;
+  bool on = false;
 };
 
 // Free text: a font name, a template, a time zone.

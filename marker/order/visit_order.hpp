@@ -1,12 +1,16 @@
 #pragma once
-// Visiting order for things that are entered at one point and left at another — strokes of a
-// letter, letters of a text, pocket rings — so that the travel between them (rapid moves on a
-// mill, jumps on a galvo) stays short. Nearest neighbour with reversal, then 2-opt (reverse a run
-// of reversible items) and relocation (move one item elsewhere, optionally reversed) until no
-// move shortens the travel. The travel is open: it starts at `start` and ends at the last exit.
+// Visiting order for things that are entered at one point and left at another — the strokes of
+// a whole text, letters, pocket rings, hatch lines — so that the travel between them (rapid moves
+// on a mill, jumps on a galvo) stays short. Nearest neighbour with reversal (an R-tree of the
+// entry points not yet used), then 2-opt (reverse a run of reversible items) and relocation
+// (move one item elsewhere, optionally reversed) within a window of 24 positions around each
+// item, looked at again only near a change, until no move shortens the travel: O(N log N) in the
+// number of items.
+// The travel is open: it starts at `start` and ends at the last exit.
 #include <cstddef>
 #include <vector>
 
+#include "base/progress.hpp"
 #include "fonts/box.hpp"
 
 namespace mark {
@@ -36,6 +40,8 @@ double travel_length(const std::vector<VisitItem>& items, const std::vector<Visi
                      const Point& start);
 
 // A short visiting order (never longer than the items in their given order, unreversed).
-std::vector<VisitStep> plan_visit_order(const std::vector<VisitItem>& items, const Point& start);
+// `progress` is told how far it got and may stop it (throws Interrupted).
+std::vector<VisitStep> plan_visit_order(const std::vector<VisitItem>& items, const Point& start,
+                                        const Progress& progress = Progress::none());
 
 }  // namespace mark

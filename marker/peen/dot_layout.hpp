@@ -15,9 +15,12 @@ namespace mark {
 DotText layout_dot_text(std::string_view utf8_text, const DotFont& font,
                         const LayoutOptions& options);
 
-// "Continuous" dot characters from any stroke figure: dots along every lit element at most
-// `pitch_mm` apart (both ends included), then every dot closer than half a pitch to one already
-// kept is dropped, so joints and crossings are struck once. Cells are positions in each glyph's
+// "Continuous" dot characters from any stroke figure: each glyph's lit elements are chained into
+// strokes by the shared join rule (fonts/stroke_join.hpp), each stroke is cut at its corners (a
+// turn of more than 10° between elements), and every smooth run gets evenly spaced dots at most
+// `pitch_mm` apart, both ends included — so a corner is always struck and a curve drawn in
+// pieces is not. Then every dot closer than half a pitch to one already kept is dropped, so
+// joints and crossings are struck once. Cells are positions in each glyph's
 // own frame on a grid of the pitch. Throws InputError for a pitch that is not positive.
 DotText dots_along_strokes(const Figure& figure, double pitch_mm);
 

@@ -66,7 +66,7 @@ PeenPlan plan_peen(const DotText& text, PlannerKind kind, const PeenSetup& setup
     case PlannerKind::block: return plan_block_snake(text, setup.window, setup.block_one_axis_at_a_time);
     case PlannerKind::optimized: {
       TourOptions tour;
-      tour.stop = setup.stop;
+      tour.progress = setup.progress;
       return plan_optimized(text, home, setup.gantry, tour);
     }
   }

@@ -6,7 +6,7 @@
 #include "marker/peen/dot_text.hpp"
 #include "marker/peen/gantry.hpp"
 #include "marker/peen/peen_plan.hpp"
-#include "ringbuffer/stop_flag.hpp"
+#include "base/progress.hpp"
 
 namespace mark {
 
@@ -25,7 +25,7 @@ struct PeenSetup {
   Box window;
   GantryConfig gantry;
   bool block_one_axis_at_a_time = true;  // see plan_block_snake
-  const StopFlag* stop = nullptr;         // Ctrl-C: the optimiser throws Interrupted
+  const Progress* progress = &Progress::none();  // the optimiser reports to it; may stop it (Interrupted)
 };
 
 // The dots' bounding box: the smallest window, the most favourable to the whole-window snake.

@@ -2,10 +2,12 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <unordered_map>
 
 #include "base/error.hpp"
+#include "fonts/stroke_join.hpp"
 #include "marker/peen/dot_layout.hpp"
 
 namespace mark {
@@ -22,6 +24,41 @@ double param_at_length(const Element& e, double s, double total) {
     (e.length_between(0, mid) < s ? lo : hi) = mid;
   }
   return (lo + hi) / 2;
+}
+
+// Elements of a stroke between two corners, walked by arc length.
+struct SmoothRun {
+  std::vector<Element> elements;
+  std::vector<double> lengths;
+  double length = 0;
+
+  void add(const Element& e) {
+    elements.push_back(e);
+    lengths.push_back(e.length());
+    length += lengths.back();
+  }
+  Point point_at(double s) const {
+    for (std::size_t i = 0; i + 1 < elements.size(); ++i) {
+      if (s <= lengths[i]) return elements[i].point_at(param_at_length(elements[i], s, lengths[i]));
+      s -= lengths[i];
+    }
+    return elements.back().point_at(param_at_length(elements.back(), s, lengths.back()));
+  }
+};
+
+// More turn than this between two elements is a corner, where a dot must fall.
+constexpr double kCornerRad = 10 * std::numbers::pi / 180;
+
+std::vector<SmoothRun> smooth_runs(const std::vector<Element>& stroke) {
+  std::vector<SmoothRun> runs(1);
+  for (std::size_t i = 0; i < stroke.size(); ++i) {
+    if (i > 0) {
+      const double c = stroke[i - 1].tangent_at(1.0).dot(stroke[i].tangent_at(0.0));
+      if (std::acos(std::clamp(c, -1.0, 1.0)) > kCornerRad) runs.emplace_back();
+    }
+    runs.back().add(stroke[i]);
+  }
+  return runs;
 }
 
 // Kept dots on a hash grid of half-pitch cells: a candidate closer than half a pitch to a kept dot
@@ -60,20 +97,21 @@ DotText dots_along_strokes(const Figure& figure, double pitch_mm) {
   DotText out;
   out.pitch_mm = pitch_mm;
   DotSieve sieve(pitch_mm);
+  const double join_tol = figure.join_tolerance_mm();
   for (const PlacedGlyph& g : figure.glyphs) {
     const Affine to_local = g.placement().inverse();
     const std::size_t first = out.dots.size();
-    for (const Element& e : g.elements) {
-      if (!e.laser()) continue;
-      const double length = e.length();
-      const int intervals = std::max(1, static_cast<int>(std::ceil(length / pitch_mm - 1e-9)));
-      for (int k = 0; k <= intervals; ++k) {
-        const Point p = e.point_at(param_at_length(e, length * k / intervals, length));
-        if (!sieve.keep(p)) continue;
-        const Point local = to_local * p;
-        out.dots.push_back({p, out.characters,
-                            {static_cast<int>(std::lround(local.x() / pitch_mm)),
-                             static_cast<int>(std::lround(-local.y() / pitch_mm))}});
+    for (const ChainedStroke& stroke : chain_strokes(g.elements, join_tol)) {
+      for (const SmoothRun& run : smooth_runs(stroke.elements)) {
+        const int intervals = std::max(1, static_cast<int>(std::ceil(run.length / pitch_mm - 1e-9)));
+        for (int k = 0; k <= intervals; ++k) {
+          const Point p = run.point_at(run.length * k / intervals);
+          if (!sieve.keep(p)) continue;
+          const Point local = to_local * p;
+          out.dots.push_back({p, out.characters,
+                              {static_cast<int>(std::lround(local.x() / pitch_mm)),
+                               static_cast<int>(std::lround(-local.y() / pitch_mm))}});
+        }
       }
     }
     if (out.dots.size() == first) continue;

@@ -104,8 +104,9 @@ class Tour {
 
 class LocalSearch {
  public:
-  LocalSearch(Tour& tour, const MoveCost& cost, std::vector<std::vector<std::size_t>> neighbours)
-      : t_(tour), cost_(cost), nb_(std::move(neighbours)), queued_(tour.size(), false) {}
+  LocalSearch(Tour& tour, const MoveCost& cost, std::vector<std::vector<std::size_t>> neighbours,
+              const Progress& progress)
+      : t_(tour), cost_(cost), nb_(std::move(neighbours)), queued_(tour.size(), false), progress_(progress) {}
 
   void wake(std::size_t p) {
     if (!queued_[p]) queued_[p] = true, queue_.push_back(p);
@@ -117,7 +118,9 @@ class LocalSearch {
   // Applies improving moves around the woken points until none is left; returns the time saved.
   double run() {
     double saved = 0;
+    std::size_t steps = 0;
     while (!queue_.empty()) {
+      if (++steps % 1024 == 0) progress_.step("peen: improving the needle path (points looked at)", steps, 0);
       const std::size_t a = queue_.front();
       queue_.pop_front();
       queued_[a] = false;
@@ -205,6 +208,7 @@ class LocalSearch {
   std::deque<std::size_t> queue_;
   std::vector<bool> queued_;
   std::size_t max_reversal_ = static_cast<std::size_t>(-1);
+  const Progress& progress_;
 };
 
 }  // namespace
@@ -230,7 +234,7 @@ void improve_tour(std::vector<std::size_t>& tour, const MoveCost& cost, std::siz
   const std::size_t n = tour.size();
   if (n < 4) return;
   Tour t(tour);
-  LocalSearch search(t, cost, PointGrid(cost).neighbour_lists(options.neighbours));
+  LocalSearch search(t, cost, PointGrid(cost).neighbour_lists(options.neighbours), *options.progress);
   for (std::size_t p = 0; p < n; ++p) search.wake(p);
   search.run();
   if (n < 8) {
@@ -248,7 +252,7 @@ void improve_tour(std::vector<std::size_t>& tour, const MoveCost& cost, std::siz
   const std::size_t kicks = std::min(options.kicks_per_point * n, options.max_kicks);
   std::vector<std::pair<std::size_t, std::size_t>> log;
   for (std::size_t k = 0; k < kicks; ++k) {
-    if (options.stop && options.stop->requested()) throw Interrupted();
+    if (k % 64 == 0) options.progress->step("peen: kicking the needle path", k, kicks);
     // Cut points i < j < l inside a window: A [i+1..j] [j+1..l] D → A [j+1..l] [i+1..j] D.
     const std::size_t i = random() % n;
     std::size_t j = 1 + random() % (window - 1), l = 1 + random() % (window - 1);

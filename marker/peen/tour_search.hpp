@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "marker/peen/move_cost.hpp"
-#include "ringbuffer/stop_flag.hpp"
+#include "base/progress.hpp"
 
 namespace mark {
 
@@ -22,7 +22,8 @@ struct TourOptions {
   std::size_t max_kicks = 2000;
   std::size_t kick_span = 50;        // tour positions a kick spans at most
   std::uint64_t seed = 0x5eed;       // the kicks' random sequence (fixed: plans are repeatable)
-  const StopFlag* stop = nullptr;    // Ctrl-C: improve_tour throws Interrupted between kicks
+  // Told how far the search got, between moves and kicks; may stop it (throws Interrupted).
+  const Progress* progress = &Progress::none();
 };
 
 // The visiting order of all points, starting with `start`.

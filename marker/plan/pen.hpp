@@ -50,6 +50,11 @@ struct Pen {
   double min_run_in_mm = 0;
   double settle_mm = 0.001;
   double join_speed_mm_s = 0;   // speed on the joining line between a run-out and a run-in
+  // Blanking marks each element at the speed nearest the pen's at which it takes whole ticks,
+  // so element boundaries fall on the locus's ticks. A board with its own clock
+  // (plan_for_device) runs its own ticks: it marks at the pen's speed, or the host's rounding
+  // would only make the board's speed words change from stroke to stroke.
+  bool whole_tick_speeds = true;
 
   // The head's tracking error τ: sizes the automatic run-ins and variable jump delays.
   double tracking_error_s = 0;

@@ -46,7 +46,9 @@ void plan_stroke_blanking(PlanBuilder& b, const Stroke& stroke) {
   for (std::size_t i = 0; i < els.size(); ++i) {
     const Element& e = els[i];
     Command mark = b.mark(e, pen.mark_speed_mm_s, CommandRole::stroke);
-    const double v = mark.speed_mm_s = whole_tick_speed(mark.length, pen.mark_speed_mm_s, pen.tick_s);
+    const double v = mark.speed_mm_s = pen.whole_tick_speeds
+                                           ? whole_tick_speed(mark.length, pen.mark_speed_mm_s, pen.tick_s)
+                                           : pen.mark_speed_mm_s;
     const bool starts_run = i == 0 || !continues_smoothly;
     if (starts_run) {
       const Point dir = e.tangent_at(0.0);

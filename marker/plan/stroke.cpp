@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "fonts/stroke_join.hpp"
+
 namespace mark {
 
 double Stroke::length_mm() const {
@@ -13,6 +15,7 @@ double Stroke::length_mm() const {
 Stroke Stroke::reversed() const {
   Stroke r;
   r.glyph = glyph;
+  r.join_tol_mm = join_tol_mm;
   r.elements.reserve(elements.size());
   for (auto it = elements.rbegin(); it != elements.rend(); ++it) r.elements.push_back(it->reversed());
   return r;
@@ -25,27 +28,15 @@ std::vector<Stroke> strokes_of(const Figure& figure) {
 }
 
 void append_glyph_strokes(const Figure& figure, std::size_t g, std::vector<Stroke>& strokes) {
-  {
-    Stroke current;
-    current.glyph = g;
-    auto flush = [&] {
-      if (!current.elements.empty()) strokes.push_back(std::move(current));
-      current = Stroke{};
-      current.glyph = g;
-    };
-    for (const Element& e : figure.glyphs[g].elements) {
-      if (!e.laser()) {
-        flush();
-        continue;
-      }
-      if ((e.end() - e.start()).norm() <= kJoinTolerance_mm && e.kind() == ElementKind::line)
-        continue;  // a zero-length line marks nothing and has no direction
-      if (!current.elements.empty() &&
-          (current.elements.back().end() - e.start()).norm() > kJoinTolerance_mm)
-        flush();
-      current.elements.push_back(e);
-    }
-    flush();
+  // The same joins as every other stage (fonts/stroke_join.hpp): pieces that meet within the
+  // shared fraction of the letter height are one stroke, drawn without a jump.
+  const double tol = figure.join_tolerance_mm();
+  for (ChainedStroke& c : chain_strokes(figure.glyphs[g].elements, tol)) {
+    const Element& first = c.elements.front();
+    if (c.elements.size() == 1 && first.kind() == ElementKind::line &&
+        (first.end() - first.start()).norm() <= kJoinTolerance_mm)
+      continue;  // a zero-length line marks nothing and has no direction
+    strokes.push_back(Stroke{std::move(c.elements), g, tol});
   }
 }
 

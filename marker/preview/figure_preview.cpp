@@ -36,12 +36,23 @@ Box grown(const Box& b, double by) {
 
 // The pen's route through the figure: travel from each stroke's end to the next stroke's start,
 // whether the glyph data holds that move as a laser-off element or it falls between glyphs.
-void draw_travel(Canvas& canvas, const Figure& figure) {
+// Paths are stroked every few hundred glyphs: one cairo_stroke of a whole long text cannot be
+// stopped, a run of short ones can.
+constexpr std::size_t kGlyphsPerStroke = 256;
+
+void draw_travel(Canvas& canvas, const Figure& figure, const Progress& progress) {
   cairo_t* cr = canvas.cr();
   bool have_pen = false;
   Point pen;
-  for (const PlacedGlyph& g : figure.glyphs) {
-    for (const Element& e : g.elements) {
+  set_colour(cr, kTravelColour, 0.8);
+  canvas.set_line_px(1.0);
+  canvas.set_dash_px(4, 3);
+  for (std::size_t k = 0; k < figure.glyphs.size(); ++k) {
+    if (k % kGlyphsPerStroke == 0) {
+      cairo_stroke(cr);
+      progress.step("preview: drawing the travel of glyph", k, figure.glyphs.size());
+    }
+    for (const Element& e : figure.glyphs[k].elements) {
       if (!e.laser()) continue;
       if (have_pen && (e.start() - pen).norm() > 1e-9) {
         cairo_move_to(cr, pen.x(), pen.y());
@@ -51,9 +62,6 @@ void draw_travel(Canvas& canvas, const Figure& figure) {
       have_pen = true;
     }
   }
-  set_colour(cr, kTravelColour, 0.8);
-  canvas.set_line_px(1.0);
-  canvas.set_dash_px(4, 3);
   cairo_stroke(cr);
   canvas.set_dash_px(0, 0);
 }
@@ -92,21 +100,26 @@ void draw_field(Canvas& canvas, const Field& field) {
   cairo_stroke(cr);
 }
 
-void draw_marks(Canvas& canvas, const Figure& figure) {
+void draw_marks(Canvas& canvas, const Figure& figure, const Progress& progress) {
   cairo_t* cr = canvas.cr();
-  for (const PlacedGlyph& g : figure.glyphs)
-    for (const Element& e : g.elements)
-      if (e.laser()) append_element(cr, e);
   set_colour(cr, kMarkColour);
   canvas.set_line_px(std::clamp(canvas.px_per_mm() * 0.08, 1.2, 3.0));
+  for (std::size_t k = 0; k < figure.glyphs.size(); ++k) {
+    if (k % kGlyphsPerStroke == 0) {
+      cairo_stroke(cr);
+      progress.step("preview: drawing glyph", k, figure.glyphs.size());
+    }
+    for (const Element& e : figure.glyphs[k].elements)
+      if (e.laser()) append_element(cr, e);
+  }
   cairo_stroke(cr);
 }
 
 void draw_panel(Canvas& canvas, const Figure& figure, const Field& field, const PreviewOptions& o) {
   draw_field(canvas, field);
   if (o.circle) draw_circle_guide(canvas, *o.circle);
-  if (o.show_travel) draw_travel(canvas, figure);
-  draw_marks(canvas, figure);
+  if (o.show_travel) draw_travel(canvas, figure, *o.progress);
+  draw_marks(canvas, figure, *o.progress);
 }
 
 }  // namespace

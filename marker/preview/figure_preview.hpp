@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "base/progress.hpp"
 #include "marker/layout/figure.hpp"
 #include "marker/layout/layout.hpp"
 
@@ -14,6 +15,7 @@ struct PreviewOptions {
   double px_per_mm = 0;  // 0: the field fills about 1200 px
   bool show_travel = true;
   std::optional<CircleFit> circle;  // circular fitting: the circle the letters stand on
+  const Progress* progress = &Progress::none();  // told every few hundred glyphs; may stop the drawing
 };
 
 // Throws InputError naming the file if it cannot be written or its extension is not .svg/.png.

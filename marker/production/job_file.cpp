@@ -15,6 +15,7 @@
 #include "marker/limits/production_settings.hpp"
 #include "marker/production/job_parse_context.hpp"
 #include "marker/production/json_reader.hpp"
+#include "marker/vars/data_list.hpp"
 
 namespace mark {
 namespace {
@@ -152,6 +153,12 @@ JobPen parse_pen(JsonReader p, const std::string& name, const HeadModel& head) {
   pen.laser.power_pct = p.number_or_default(kPower);
   pen.laser.frequency_khz = p.number_or_default(kFrequency);
   pen.laser.pulse_width_ns = p.number_or_default(kPulseWidth);
+  if (auto src = p.choice(kLaserSource)) pen.laser.source = *parse_laser_source(*src);
+  try {
+    check_laser_settings(pen.laser);  // what the pen's source cannot take (a CO2 pulse width)
+  } catch (const InputError& e) {
+    p.fail_here(e.what());
+  }
   pen.passes = static_cast<int>(p.integer(kPasses).value_or(kPasses.fallback()));
   p.finish();
   return pen;
@@ -174,7 +181,8 @@ std::string parse_device(JsonReader& top) {
     top.fail(kDevice.name.key, e.what());
   }
   top.fail(kDevice.name.key, "'" + *device + "' is not a device (sim: the simulated scanner; lmc, "
-                     "lmc:SERIAL, lmc-capture:FILE: a BJJCZ LMC board)");
+                     "lmc:SERIAL, lmc-capture:FILE: a BJJCZ LMC board; lmc-emulated[:VARIANT]: the "
+                     "emulated board)");
 }
 
 }  // namespace
@@ -247,10 +255,25 @@ JobFile parse_job(std::string_view text, const std::string& source) {
     JsonReader counters = top.object("counters");
     for (const auto& [k, v] : top.raw("counters")->items()) {
       check_name(counters, k, k, "counter");
-      if (k == "date" || k == "var" || k == "shift")
+      if (k == "date" || k == "var" || k == "shift" || k == "col")
         counters.fail(k, "\"" + k + "\" is a field name of its own; call the counter something else");
       job.counters.emplace(k, parse_counter(counters.object(k), k, job.time_zone));
     }
+  }
+  if (top.has("data")) {
+    JsonReader d = top.object("data");
+    JobDataList list;
+    list.file = d.string("file").value_or("");
+    if (list.file.empty()) d.fail("file", "a data list needs its CSV file");
+    const std::filesystem::path file(list.file);
+    list.path = file.is_absolute() ? list.file : (std::filesystem::path(source).parent_path() / file).string();
+    if (auto delim = d.string("delimiter")) {
+      const auto c = parse_delimiter(*delim);
+      if (!c) d.fail("delimiter", "\"" + *delim + "\" is not a delimiter: \",\", \";\" or \"tab\"");
+      list.delimiter = *c;
+    }
+    d.finish();
+    job.data = list;
   }
   if (top.has("pens")) {
     JsonReader pens = top.object("pens");
@@ -291,6 +314,8 @@ JobFile parse_job(std::string_view text, const std::string& source) {
           o.fail(kTemplate.name.key, "{" + c + "}: no counter named \"" + c + "\" in \"counters\"");
       if (t.uses(FieldKind::shift) && job.shifts.empty())
         o.fail(kTemplate.name.key, "{shift} needs the job's \"shifts\" (codes and start times)");
+      if (t.uses(FieldKind::column) && !job.data)
+        o.fail(kTemplate.name.key, "{col:" + t.columns().front() + "} needs the job's data list (\"data\": {\"file\": …})");
     }
     job.objects.push_back(std::move(obj));
   }

@@ -68,6 +68,13 @@ struct JobObject {
   const TextTemplate& text_template() const { return text() ? text()->text : code()->data; }
 };
 
+// A data list the parts take their rows from, one per part ({col:NAME} fields; docs/store.md).
+struct JobDataList {
+  std::string file;       // as the job names it (the audit log keeps this)
+  std::string path;       // resolved against the job file's folder
+  char delimiter = ',';
+};
+
 struct JobFile {
   std::string source;          // the file name, for messages
   std::string job_name;        // "name", or the file's stem
@@ -77,6 +84,7 @@ struct JobFile {
   ShiftTable shifts;
   std::map<std::string, std::string> variables;  // defaults; --set overrides
   std::map<std::string, CounterSpec> counters;
+  std::optional<JobDataList> data;
   std::map<std::string, JobPen> pens;
   std::vector<JobObject> objects;
 

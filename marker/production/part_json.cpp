@@ -49,6 +49,12 @@ nlohmann::json part_line(const PartResult& part) {
   j["serials"] = part.serials;
   j["outcome"] = to_string(part.outcome);
   j["message"] = part.message;
+  j["data_row"] = part.data_row ? nlohmann::json(*part.data_row) : nlohmann::json();
+  j["note"] = part.note;
+  // Where the outcome is: "store", "journal" (replayed into the store at the next start) or
+  // "none" (the row is recorded aborted at the station's next start).
+  j["recorded"] = part.recorded.stored ? "store" : part.recorded.journaled ? "journal" : "none";
+  if (!part.recorded.stored) j["record_error"] = part.record_error.empty() ? part.recorded.error : part.record_error;
   return j;
 }
 

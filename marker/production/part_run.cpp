@@ -58,6 +58,7 @@ PartRunner::PartRunner(const JobFile& job, const JobFonts& fonts,
     }
     compilers_.emplace_back(std::move(spec), desc.level, o.code() && o.code()->escapes);
   }
+  if (job.data) data_ = load_data_list(job);
   mirrors_ = device_position();
 }
 
@@ -82,25 +83,33 @@ PartResult PartRunner::mark_next(SysTime now, const PartOptions& options) {
   if (options.phase) options.phase(PartPhase::allocating, {});
   // Rendering, layout, planning and every refusal happen inside the transaction: a refused
   // part consumes nothing.
-  const Allocation a = store_.allocate(counters_, job_.shifts, context_, [&](const auto& serials) {
-    std::vector<ObjectText> texts = render_objects(job_, variables_, now, serials);
+  DataPick pick;
+  if (data_) pick = {&*data_, job_.data->file, next_row_};
+  const Allocation a = store_.allocate(counters_, job_.shifts, context_, pick, [&](const PartValues& v) {
+    std::map<std::string, std::string> columns;
+    if (v.data_row) columns = data_->values(*v.data_row);
+    std::vector<ObjectText> texts = render_objects(job_, variables_, v.now, v.serials, &columns);
     compiled = compile(texts);
     return texts;
   });
+  if (a.data_row) next_row_ = *a.data_row + 1;
   PartResult part;
   part.mark_id = a.mark_id;
   part.texts = a.objects;
   part.serials = a.serials;
+  if (a.data_row) part.data_row = static_cast<std::int64_t>(*a.data_row) + 1;
+  part.note = a.note;
   return run(std::move(part), std::move(compiled), options);
 }
 
 PartResult PartRunner::remark(std::int64_t original, SysTime now, const PartOptions& options) {
   context_.now = now;
   if (options.phase) options.phase(PartPhase::allocating, {});
-  const Allocation a = store_.remark(original, context_);  // refuses a row of another job
+  const Allocation a = store_.remark(original, context_, options.remark_reason);  // refuses a row of another job
   PartResult part;
   part.mark_id = a.mark_id;
-  part.remark_of = original;
+  part.remark_of = a.remark_of;
+  if (a.data_row) part.data_row = static_cast<std::int64_t>(*a.data_row) + 1;
   part.texts = a.objects;
   part.serials = a.serials;
   std::vector<CompiledJob> compiled;
@@ -181,7 +190,13 @@ void PartRunner::record(PartResult& part, const PartOptions& options) {
                                                          : Outcome::failed;
   record.message = part.message;
   record.figures = part_figures(part);
-  store_.record_outcome(part.mark_id, record);
+  try {
+    // Journal first, then the store: a part marked in full is never logged void for want of a
+    // store write (serial_store.hpp).
+    part.recorded = store_.record_outcome(part.mark_id, record);
+  } catch (const StoreError& e) {
+    part.record_error = e.what();  // the caller still reports the part, with this
+  }
   if (options.phase) options.phase(PartPhase::finished, part.serials);
 }
 

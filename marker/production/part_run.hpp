@@ -46,6 +46,8 @@ struct PartResult {
   std::optional<std::int64_t> remark_of;
   std::vector<ObjectText> texts;                 // every object's rendered text
   std::map<std::string, std::int64_t> serials;   // counter values consumed (a re-mark: the original's)
+  std::optional<std::int64_t> data_row;          // the data-list row taken (1: the first after the header)
+  std::string note;                              // what the store noticed (a clock stepped back)
   JobOutcome outcome = JobOutcome::done;
   std::string message;  // aborted / failed: which object stopped where, and why
   std::optional<std::size_t> stopped_object;     // its index
@@ -58,6 +60,12 @@ struct PartResult {
   std::optional<Quality> quality;
   std::optional<PulseFigures> pulses;
 
+  // How the outcome was recorded: in the store, or kept in the station's outcome journal until
+  // the store takes it; record_error says why neither took it (the row is then closed aborted
+  // at the station's next start).
+  OutcomeWrite recorded;
+  std::string record_error;
+
   std::string text() const;  // the texts joined by new lines
 };
 
@@ -65,6 +73,7 @@ struct PartOptions {
   JobOptions job;  // for every object's device job (stop flag, injection, virtual time, evaluator)
   // Told at each step of a part with the values it consumed (so far): the kill test's probe.
   std::function<void(PartPhase, const std::map<std::string, std::int64_t>& serials)> phase;
+  std::string remark_reason;  // a re-mark's reason, kept in its audit row
 };
 
 class PartRunner {
@@ -96,6 +105,8 @@ class PartRunner {
   MarkContext context_;
   std::map<std::string, CounterSpec> counters_;  // the ones the templates use
   std::vector<JobCompiler> compilers_;           // one per object, in file order
+  std::optional<DataList> data_;                 // the job's data list, if any
+  std::size_t next_row_ = 0;                     // rows before it were taken (by this run or earlier)
   // Where the device's mirrors are before the next part: each object is planned from where the
   // one before it ended (its last command), the first from where the last part ended.
   Point mirrors_{0, 0};

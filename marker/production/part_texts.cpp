@@ -31,7 +31,8 @@ std::map<std::string, std::string> job_variables(const JobFile& job,
 std::vector<ObjectText> render_objects(const JobFile& job,
                                        const std::map<std::string, std::string>& variables,
                                        SysTime now,
-                                       const std::map<std::string, std::int64_t>& serials) {
+                                       const std::map<std::string, std::int64_t>& serials,
+                                       const std::map<std::string, std::string>* columns) {
   MarkValues v;
   v.now = now;
   v.zone = &job.time_zone;
@@ -39,11 +40,12 @@ std::vector<ObjectText> render_objects(const JobFile& job,
   v.variables = &variables;
   v.counters = &job.counters;
   v.serials = &serials;
+  v.columns = columns;
   std::vector<ObjectText> texts;
   for (std::size_t i = 0; i < job.objects.size(); ++i) {
     const JobObject& o = job.objects[i];
     try {
-      texts.push_back({o.name, render(o.text_template(), v)});
+      texts.push_back({o.name, render(o.text_template(), v), o.text_template().uses(FieldKind::counter)});
     } catch (const InputError& e) {
       throw InputError(object_place(job, i) + e.what());
     }
@@ -53,15 +55,36 @@ std::vector<ObjectText> render_objects(const JobFile& job,
 
 std::vector<ObjectText> first_part_texts(const JobFile& job,
                                          const std::map<std::string, std::string>& variables,
-                                         SysTime now, std::map<std::string, std::int64_t>* serials) {
+                                         SysTime now, std::map<std::string, std::int64_t>* serials,
+                                         const DataList* data) {
   std::map<std::string, std::int64_t> starts;
   for (const auto& [name, spec] : job.used_counters()) starts[name] = spec.start;
   auto vars = variables;
   for (const std::string& v : job.required_variables())
     if (!vars.count(v)) vars[v] = "<" + v + ">";
-  std::vector<ObjectText> texts = render_objects(job, vars, now, starts);
+  std::map<std::string, std::string> columns;
+  if (data && data->size()) columns = data->values(0);
+  for (const JobObject& o : job.objects)
+    for (const std::string& c : o.text_template().columns())
+      if (!columns.count(c)) columns[c] = "<" + c + ">";
+  std::vector<ObjectText> texts = render_objects(job, vars, now, starts, &columns);
   if (serials) *serials = std::move(starts);
   return texts;
+}
+
+DataList load_data_list(const JobFile& job) {
+  if (!job.data) throw InputError(job.source + ": the job has no data list (\"data\")");
+  DataList list = DataList::read(job.data->path, job.data->delimiter);
+  for (std::size_t i = 0; i < job.objects.size(); ++i) {
+    for (const std::string& c : job.objects[i].text_template().columns()) {
+      if (list.column(c)) continue;
+      std::string names;
+      for (const std::string& n : list.columns()) names.append(names.empty() ? "" : ", ").append(n);
+      throw InputError(object_place(job, i) + "{col:" + c + "}: the data list " + job.data->file +
+                       " has no column \"" + c + "\" (its columns: " + names + ")");
+    }
+  }
+  return list;
 }
 
 JobFonts::JobFonts(const JobFile& job, std::vector<std::string>* warnings) {

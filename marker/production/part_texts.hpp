@@ -10,6 +10,7 @@
 #include "marker/job/job.hpp"
 #include "marker/production/job_file.hpp"
 #include "marker/store/audit_row.hpp"
+#include "marker/vars/data_list.hpp"
 
 namespace mark {
 
@@ -18,17 +19,26 @@ namespace mark {
 std::map<std::string, std::string> job_variables(const JobFile& job,
                                                  const std::map<std::string, std::string>& sets);
 
+// Every object's text; an object whose template carries a counter field is marked unique (the
+// store refuses a part whose such text was marked before). `columns`: the part's data-list row.
 std::vector<ObjectText> render_objects(const JobFile& job,
                                        const std::map<std::string, std::string>& variables,
                                        SysTime now,
-                                       const std::map<std::string, std::int64_t>& serials);
+                                       const std::map<std::string, std::int64_t>& serials,
+                                       const std::map<std::string, std::string>* columns = nullptr);
+
+// The job's data list, read and checked against its templates: every {col:NAME} names a
+// column. Throws InputError naming the file (and line) or the object.
+DataList load_data_list(const JobFile& job);
 
 // The texts of a first part on a fresh store (`job check`, `job new --speed auto`): every
-// counter at its start (given back in `serials`), variables without a value shown as <name>.
+// counter at its start (given back in `serials`), variables without a value shown as <name>,
+// the data list's first row (or <column> without one).
 std::vector<ObjectText> first_part_texts(const JobFile& job,
                                          const std::map<std::string, std::string>& variables,
                                          SysTime now,
-                                         std::map<std::string, std::int64_t>* serials = nullptr);
+                                         std::map<std::string, std::int64_t>* serials = nullptr,
+                                         const DataList* data = nullptr);
 
 class JobFonts {
  public:

@@ -1,5 +1,7 @@
 #include "marker/store/audit_row.hpp"
 
+#include "marker/store/store_error.hpp"
+
 namespace mark {
 
 std::string_view to_string(Outcome o) {
@@ -24,14 +26,31 @@ std::string_view to_string(AuditKind k) {
     case AuditKind::remark: return "remark";
     case AuditKind::reserve: return "reserve";
     case AuditKind::set: return "set";
+    case AuditKind::create: return "create";
   }
   return "?";
 }
 
 std::optional<AuditKind> parse_audit_kind(std::string_view name) {
-  for (AuditKind k : {AuditKind::mark, AuditKind::remark, AuditKind::reserve, AuditKind::set})
+  for (AuditKind k : {AuditKind::mark, AuditKind::remark, AuditKind::reserve, AuditKind::set,
+                     AuditKind::create})
     if (name == to_string(k)) return k;
   return std::nullopt;
+}
+
+std::string_view to_string(StoreErrorKind kind) {
+  switch (kind) {
+    case StoreErrorKind::busy: return "locked";
+    case StoreErrorKind::full: return "full";
+    case StoreErrorKind::io: return "i/o error";
+    case StoreErrorKind::connection: return "connection lost";
+    case StoreErrorKind::corrupt: return "damaged";
+    case StoreErrorKind::constraint: return "refused by a key";
+    case StoreErrorKind::cancelled: return "cancelled";
+    case StoreErrorKind::missing: return "missing";
+    case StoreErrorKind::other: return "error";
+  }
+  return "?";
 }
 
 std::string AuditRow::text() const {

@@ -1,25 +1,26 @@
 #include "marker/store/open_store.hpp"
 
-#include <filesystem>
-
 #include "marker/store/postgres_backend.hpp"
 
 namespace mark {
 
-std::string default_store_path(const std::string& job_path) {
-  std::filesystem::path p(job_path);
-  p.replace_extension(".serials.sqlite");
-  return p.string();
+std::unique_ptr<StoreBackend> open_backend(const std::string& location, StoreAccess access,
+                                           const StoreOptions& options) {
+  if (is_postgres_url(location)) {
+    PgOptions pg;
+    pg.lock_timeout_ms = options.wait_ms;
+    pg.statement_timeout_ms = options.statement_ms;
+    return open_postgres_store(location, access, pg);
+  }
+  SqliteOptions sq;
+  sq.busy_timeout_ms = options.wait_ms;
+  sq.fault_injection = options.fault_injection;
+  return open_sqlite_store(location, access, sq);
 }
 
-bool is_postgres_url(const std::string& location) {
-  return location.rfind("postgresql://", 0) == 0 || location.rfind("postgres://", 0) == 0;
-}
-
-std::unique_ptr<SerialStore> open_store(const std::string& location, StoreAccess access) {
-  if (is_postgres_url(location))
-    return std::make_unique<SerialStore>(open_postgres_store(location));
-  return std::make_unique<SerialStore>(open_sqlite_store(location, access));
+std::unique_ptr<SerialStore> open_store(const std::string& location, StoreAccess access, StoreSettings settings,
+                                        const StoreOptions& options) {
+  return std::make_unique<SerialStore>(open_backend(location, access, options), std::move(settings));
 }
 
 }  // namespace mark

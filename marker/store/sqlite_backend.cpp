@@ -1,148 +1,183 @@
 #include "marker/store/sqlite_backend.hpp"
 
-#include <fcntl.h>
-#include <sqlite3.h>
-#include <sys/file.h>
 #include <unistd.h>
 
 #include <filesystem>
-#include <map>
 
 #include "marker/store/row_codec.hpp"
+#include "marker/store/sqlite_db.hpp"
+#include "marker/store/sqlite_fault_vfs.hpp"
+#include "marker/store/sqlite_schema.hpp"
+#include "marker/store/station_lock.hpp"
 
 namespace mark {
 namespace {
 
-constexpr const char* kFormat = "marker-store/1";
-
-// Append-only: the audit rows, the issues and the outcomes can be added, never changed.
-constexpr const char* kSchema = R"SQL(
-CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);
-CREATE TABLE IF NOT EXISTS counters(
-  name TEXT PRIMARY KEY, next_value INTEGER NOT NULL, used INTEGER NOT NULL,
-  period TEXT NOT NULL, cycle INTEGER NOT NULL, exhausted INTEGER NOT NULL);
-CREATE TABLE IF NOT EXISTS marks(
-  id INTEGER PRIMARY KEY AUTOINCREMENT, time_utc TEXT NOT NULL, station TEXT NOT NULL,
-  job TEXT NOT NULL, job_sha256 TEXT NOT NULL, kind TEXT NOT NULL,
-  remark_of INTEGER REFERENCES marks(id), objects TEXT NOT NULL, serials TEXT NOT NULL);
-CREATE INDEX IF NOT EXISTS marks_time ON marks(time_utc);
-CREATE INDEX IF NOT EXISTS marks_station ON marks(station);
-CREATE TABLE IF NOT EXISTS issues(
-  counter TEXT NOT NULL, period TEXT NOT NULL, cycle INTEGER NOT NULL, value INTEGER NOT NULL,
-  repeat INTEGER NOT NULL, mark_id INTEGER NOT NULL REFERENCES marks(id),
-  PRIMARY KEY(counter, period, cycle, value, repeat));
-CREATE INDEX IF NOT EXISTS issues_mark ON issues(mark_id);
-CREATE TABLE IF NOT EXISTS outcomes(
-  mark_id INTEGER PRIMARY KEY REFERENCES marks(id), time_utc TEXT NOT NULL,
-  outcome TEXT NOT NULL, message TEXT NOT NULL, figures TEXT NOT NULL);
-CREATE TRIGGER IF NOT EXISTS marks_no_update BEFORE UPDATE ON marks
-  BEGIN SELECT RAISE(ABORT, 'the audit log is append-only'); END;
-CREATE TRIGGER IF NOT EXISTS marks_no_delete BEFORE DELETE ON marks
-  BEGIN SELECT RAISE(ABORT, 'the audit log is append-only'); END;
-CREATE TRIGGER IF NOT EXISTS issues_no_update BEFORE UPDATE ON issues
-  BEGIN SELECT RAISE(ABORT, 'issued serial numbers are append-only'); END;
-CREATE TRIGGER IF NOT EXISTS issues_no_delete BEFORE DELETE ON issues
-  BEGIN SELECT RAISE(ABORT, 'issued serial numbers are append-only'); END;
-CREATE TRIGGER IF NOT EXISTS outcomes_no_update BEFORE UPDATE ON outcomes
-  BEGIN SELECT RAISE(ABORT, 'outcomes are append-only'); END;
-CREATE TRIGGER IF NOT EXISTS outcomes_no_delete BEFORE DELETE ON outcomes
-  BEGIN SELECT RAISE(ABORT, 'outcomes are append-only'); END;
-)SQL";
-
-class Db {
- public:
-  explicit Db(std::string path) : path_(std::move(path)) {}
-  ~Db() {
-    if (db_) sqlite3_close_v2(db_);
-  }
-  sqlite3* get() const { return db_; }
-  sqlite3** out() { return &db_; }
-  const std::string& path() const { return path_; }
-  [[noreturn]] void fail(const std::string& what) const {
-    throw StoreError("serial store " + path_ + ": " + what + ": " +
-                     (db_ ? sqlite3_errmsg(db_) : "cannot open"));
-  }
-  void exec(const char* sql) const {
-    char* err = nullptr;
-    if (sqlite3_exec(db_, sql, nullptr, nullptr, &err) != SQLITE_OK) {
-      const std::string msg = err ? err : "?";
-      sqlite3_free(err);
-      throw StoreError("serial store " + path_ + ": " + msg);
-    }
-  }
-
- private:
-  std::string path_;
-  sqlite3* db_ = nullptr;
-};
-
-class Stmt {
- public:
-  Stmt(const Db& db, const char* sql) : db_(db) {
-    if (sqlite3_prepare_v2(db.get(), sql, -1, &s_, nullptr) != SQLITE_OK) db.fail("prepare");
-  }
-  ~Stmt() { sqlite3_finalize(s_); }
-  Stmt& bind(int i, std::int64_t v) {
-    sqlite3_bind_int64(s_, i, v);
-    return *this;
-  }
-  Stmt& bind(int i, const std::string& v) {
-    sqlite3_bind_text(s_, i, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT);
-    return *this;
-  }
-  Stmt& bind_null(int i) {
-    sqlite3_bind_null(s_, i);
-    return *this;
-  }
-  // True while there is a row.
-  bool step() {
-    const int rc = sqlite3_step(s_);
-    if (rc == SQLITE_ROW) return true;
-    if (rc == SQLITE_DONE) return false;
-    db_.fail("statement");
-  }
-  std::int64_t i64(int c) const { return sqlite3_column_int64(s_, c); }
-  bool null(int c) const { return sqlite3_column_type(s_, c) == SQLITE_NULL; }
-  std::string text(int c) const {
-    const auto* p = reinterpret_cast<const char*>(sqlite3_column_text(s_, c));
-    return p ? std::string(p, static_cast<std::size_t>(sqlite3_column_bytes(s_, c))) : std::string();
-  }
-
- private:
-  const Db& db_;
-  sqlite3_stmt* s_ = nullptr;
-};
-
-constexpr const char* kAuditSelect =
-    "SELECT m.id, m.time_utc, m.station, m.job, m.job_sha256, m.kind, m.remark_of, m.objects, "
-    "m.serials, o.time_utc, o.outcome, o.message, o.figures FROM marks m "
-    "LEFT JOIN outcomes o ON o.mark_id = m.id ";
-
-AuditRow audit_from(const Stmt& s) {
-  AuditRow r;
-  r.id = s.i64(0);
-  r.mark.time_utc = s.text(1);
-  r.mark.station = s.text(2);
-  r.mark.job = s.text(3);
-  r.mark.job_sha256 = s.text(4);
-  r.mark.kind = parse_audit_kind(s.text(5)).value_or(AuditKind::mark);
-  if (!s.null(6)) r.mark.remark_of = s.i64(6);
-  r.mark.objects = objects_from_json(s.text(7));
-  r.mark.serials = serials_from_json(s.text(8));
-  if (!s.null(10)) {
-    OutcomeRecord o;
-    o.time_utc = s.text(9);
-    o.outcome = parse_outcome(s.text(10)).value_or(Outcome::failed);
-    o.message = s.text(11);
-    o.figures = nlohmann::json::parse(s.text(12));
-    r.outcome = std::move(o);
-  }
-  return r;
+// An audit row in kAuditColumns order, with the values it consumed (a re-mark: its original's).
+std::string audit_select(int version) {
+  const char* v2 = "m.reason, m.note, m.data_list, m.data_row, ";
+  const char* v1 = "'', '', NULL, NULL, ";
+  return std::string("SELECT m.id, m.time_utc, m.station, m.job, m.job_sha256, m.kind, m.remark_of, "
+                     "m.objects, m.serials, ") +
+         (version >= 2 ? v2 : v1) +
+         "o.time_utc, o.outcome, o.message, o.figures, "
+         "(SELECT json_group_array(json_array(i.counter, i.period, i.cycle, i.value, i.repeat)) "
+         "FROM issues i WHERE i.mark_id = COALESCE(m.remark_of, m.id)) "
+         "FROM marks m LEFT JOIN outcomes o ON o.mark_id = m.id ";
 }
 
-class SqliteTransaction : public StoreTransaction {
+// Parameters: ?1 since, ?2 value, ?3 counter, ?4 text, ?5 limit, ?6 job.
+std::string audit_query(const AuditFilter& f, int version) {
+  std::string where;
+  const auto add = [&](const std::string& cond) { where += (where.empty() ? "WHERE " : " AND ") + cond; };
+  if (!f.since_utc.empty()) add("m.time_utc >= ?1");
+  if (f.value) {
+    const std::string issued =
+        "SELECT mark_id FROM issues WHERE value = ?2" + std::string(f.counter.empty() ? "" : " AND counter = ?3");
+    add("(m.id IN (" + issued + ") OR m.remark_of IN (" + issued + "))");
+  }
+  if (f.text) {
+    if (version >= 2)
+      add("(m.id IN (SELECT mark_id FROM marked_texts WHERE text = ?4) OR "
+          "m.remark_of IN (SELECT mark_id FROM marked_texts WHERE text = ?4))");
+    else
+      add("EXISTS (SELECT 1 FROM json_each(m.objects) j WHERE json_extract(j.value, '$.text') = ?4)");
+  }
+  if (!f.job.empty()) add("m.job = ?6");
+  const std::string select = audit_select(version) + where;
+  if (f.limit) return "SELECT * FROM (" + select + " ORDER BY m.id DESC LIMIT ?5) ORDER BY 1";
+  return select + " ORDER BY m.id";
+}
+
+CounterState state_from(const SqliteStmt& q, int first) {
+  CounterState s;
+  s.next = q.i64(first);
+  s.used = q.i64(first + 1);
+  s.period = q.text(first + 2);
+  s.cycle = q.i64(first + 3);
+  s.exhausted = q.i64(first + 4) != 0;
+  return s;
+}
+
+// The reading half, shared by read-only and write transactions.
+template <class Base>
+class SqliteReading : public Base {
  public:
-  explicit SqliteTransaction(const Db& db) : db_(db) {
+  SqliteReading(const SqliteDb& db, int version) : db_(db), version_(version) {}
+
+  void audit(const AuditFilter& f, const std::function<bool(const AuditRow&)>& row) override {
+    SqliteStmt s(db_, audit_query(f, version_));
+    if (!f.since_utc.empty()) s.bind(1, f.since_utc);
+    if (f.value) s.bind(2, *f.value);
+    if (!f.counter.empty()) s.bind(3, f.counter);
+    if (f.text) s.bind(4, *f.text);
+    if (f.limit) s.bind(5, *f.limit);
+    if (!f.job.empty()) s.bind(6, f.job);
+    while (s.step())
+      if (!row(decode(s))) break;
+  }
+
+  std::optional<AuditRow> audit_row(std::int64_t id) override {
+    SqliteStmt s(db_, audit_select(version_) + "WHERE m.id = ?1");
+    s.bind(1, id);
+    if (!s.step()) return std::nullopt;
+    return decode(s);
+  }
+
+  std::optional<CounterState> counter(const std::string& name) override {
+    SqliteStmt q(db_, "SELECT next_value, used, period, cycle, exhausted FROM counters WHERE name = ?1");
+    q.bind(1, name);
+    if (!q.step()) return std::nullopt;
+    return state_from(q, 0);
+  }
+
+  std::vector<std::pair<std::string, CounterState>> counters() override {
+    SqliteStmt s(db_, "SELECT name, next_value, used, period, cycle, exhausted FROM counters ORDER BY name");
+    std::vector<std::pair<std::string, CounterState>> out;
+    while (s.step()) out.emplace_back(s.text(0), state_from(s, 1));
+    return out;
+  }
+
+  void issues(const std::string& counter,
+              const std::function<void(const Issue&, std::int64_t)>& each) override {
+    SqliteStmt s(db_, "SELECT period, cycle, value, repeat, mark_id FROM issues WHERE counter = ?1 "
+                      "ORDER BY mark_id, value");
+    s.bind(1, counter);
+    while (s.step()) each(Issue{counter, s.i64(2), s.i64(3), s.text(0), s.i64(1)}, s.i64(4));
+  }
+
+  std::optional<std::pair<std::int64_t, std::int64_t>> issued_range(
+      const std::string& counter, const std::string& period, std::int64_t cycle) override {
+    SqliteStmt s(db_, "SELECT MIN(value), MAX(value) FROM issues WHERE counter = ?1 AND period = ?2 "
+                      "AND cycle = ?3");
+    s.bind(1, counter).bind(2, period).bind(3, cycle);
+    if (!s.step() || s.null(0)) return std::nullopt;
+    return std::make_pair(s.i64(0), s.i64(1));
+  }
+
+  std::optional<std::int64_t> issue_owner(const Issue& i) override {
+    SqliteStmt s(db_, "SELECT mark_id FROM issues WHERE counter = ?1 AND period = ?2 AND cycle = ?3 "
+                      "AND value = ?4 AND repeat = ?5");
+    s.bind(1, i.counter).bind(2, i.period).bind(3, i.cycle).bind(4, i.value).bind(5, i.repeat);
+    return one(s);
+  }
+
+  std::optional<std::int64_t> text_owner(const std::string& text) override {
+    if (version_ < 2) return std::nullopt;
+    SqliteStmt s(db_, "SELECT mark_id FROM marked_texts WHERE text = ?1");
+    s.bind(1, text);
+    return one(s);
+  }
+
+  std::optional<std::int64_t> data_row_owner(const std::string& key) override {
+    if (version_ < 2) return std::nullopt;
+    SqliteStmt s(db_, "SELECT mark_id FROM data_rows WHERE row_key = ?1");
+    s.bind(1, key);
+    return one(s);
+  }
+
+  std::vector<RemarkRow> remarks_of(std::int64_t original) override {
+    SqliteStmt s(db_, "SELECT m.id, o.outcome FROM marks m LEFT JOIN outcomes o ON o.mark_id = m.id "
+                      "WHERE m.remark_of = ?1 AND m.kind = 'remark' ORDER BY m.id");
+    s.bind(1, original);
+    std::vector<RemarkRow> out;
+    while (s.step()) {
+      RemarkRow r{s.i64(0), std::nullopt};
+      if (!s.null(1)) r.outcome = parse_outcome(s.text(1));
+      out.push_back(r);
+    }
+    return out;
+  }
+
+ protected:
+  static std::optional<std::int64_t> one(SqliteStmt& s) {
+    if (!s.step()) return std::nullopt;
+    return s.i64(0);
+  }
+  AuditRow decode(const SqliteStmt& s) const {
+    return audit_row_from(
+        [&](int c) -> std::optional<std::string> {
+          if (s.null(c)) return std::nullopt;
+          return s.text(c);
+        },
+        db_.name());
+  }
+
+  const SqliteDb& db_;
+  int version_;
+};
+
+// A snapshot: BEGIN (deferred) takes no lock until the first read, and in WAL mode a reader's
+// snapshot never blocks a writer, nor a writer the reader.
+class SqliteReader final : public SqliteReading<StoreReader> {
+ public:
+  SqliteReader(const SqliteDb& db, int version) : SqliteReading(db, version) { db.exec("BEGIN"); }
+  ~SqliteReader() override { sqlite3_exec(db_.get(), "ROLLBACK", nullptr, nullptr, nullptr); }
+};
+
+class SqliteTransaction final : public SqliteReading<StoreTransaction> {
+ public:
+  SqliteTransaction(const SqliteDb& db, int version) : SqliteReading(db, version) {
     // IMMEDIATE: the write lock is taken now, so two writers never both read a counter and
     // then race to update it.
     db_.exec("BEGIN IMMEDIATE");
@@ -151,109 +186,81 @@ class SqliteTransaction : public StoreTransaction {
     if (!done_) sqlite3_exec(db_.get(), "ROLLBACK", nullptr, nullptr, nullptr);
   }
 
-  CounterState lock_counter(const std::string& name, const CounterState& initial) override {
-    Stmt ins(db_, "INSERT OR IGNORE INTO counters(name, next_value, used, period, cycle, exhausted) "
-                  "VALUES(?1, ?2, ?3, ?4, ?5, ?6)");
-    ins.bind(1, name).bind(2, initial.next).bind(3, initial.used).bind(4, initial.period)
-        .bind(5, initial.cycle).bind(6, std::int64_t{initial.exhausted});
-    ins.step();
-    Stmt q(db_, "SELECT next_value, used, period, cycle, exhausted FROM counters WHERE name = ?1");
-    q.bind(1, name);
-    if (!q.step()) db_.fail("counter '" + name + "' vanished");
-    return state_from(q);
+  std::optional<CounterState> lock_counter(const std::string& name) override { return counter(name); }
+
+  void create_counter(const std::string& name, const CounterState& s) override {
+    SqliteStmt ins(db_, "INSERT INTO counters(name, next_value, used, period, cycle, exhausted) "
+                        "VALUES(?1, ?2, ?3, ?4, ?5, ?6)");
+    ins.bind(1, name).bind(2, s.next).bind(3, s.used).bind(4, s.period).bind(5, s.cycle)
+        .bind(6, std::int64_t{s.exhausted});
+    ins.finish();
   }
 
   void update_counter(const std::string& name, const CounterState& s) override {
-    Stmt u(db_, "UPDATE counters SET next_value = ?2, used = ?3, period = ?4, cycle = ?5, "
-                "exhausted = ?6 WHERE name = ?1 RETURNING next_value");
+    SqliteStmt u(db_, "UPDATE counters SET next_value = ?2, used = ?3, period = ?4, cycle = ?5, "
+                      "exhausted = ?6 WHERE name = ?1 RETURNING next_value");
     u.bind(1, name).bind(2, s.next).bind(3, s.used).bind(4, s.period).bind(5, s.cycle)
         .bind(6, std::int64_t{s.exhausted});
-    if (!u.step() || u.i64(0) != s.next) db_.fail("counter '" + name + "' was not updated");
-    while (u.step()) {
-    }
+    if (!u.step() || u.i64(0) != s.next)
+      throw StoreError("serial store " + db_.name() + ": counter '" + name + "' was not updated");
+    u.finish();
   }
 
   std::int64_t insert_mark(const MarkRecord& m) override {
-    Stmt s(db_, "INSERT INTO marks(time_utc, station, job, job_sha256, kind, remark_of, objects, "
-                "serials) VALUES(?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8) RETURNING id");
+    SqliteStmt s(db_, "INSERT INTO marks(time_utc, station, job, job_sha256, kind, remark_of, objects, "
+                      "serials, reason, note, data_list, data_row) "
+                      "VALUES(?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12) RETURNING id");
     s.bind(1, m.time_utc).bind(2, m.station).bind(3, m.job).bind(4, m.job_sha256)
         .bind(5, std::string(to_string(m.kind)));
-    if (m.remark_of)
-      s.bind(6, *m.remark_of);
-    else
-      s.bind_null(6);
-    s.bind(7, objects_to_json(m.objects)).bind(8, serials_to_json(m.serials));
-    if (!s.step()) db_.fail("audit row not written");
+    m.remark_of ? s.bind(6, *m.remark_of) : s.bind_null(6);
+    s.bind(7, objects_to_json(m.objects)).bind(8, serials_to_json(m.serials)).bind(9, m.reason)
+        .bind(10, m.note);
+    m.data_list.empty() ? s.bind_null(11) : s.bind(11, m.data_list);
+    m.data_row ? s.bind(12, *m.data_row) : s.bind_null(12);
+    if (!s.step()) throw StoreError("serial store " + db_.name() + ": audit row not written");
     const std::int64_t id = s.i64(0);
-    while (s.step()) {
-    }
+    s.finish();
     return id;
   }
 
   void insert_issue(const Issue& i, std::int64_t mark_id) override {
-    Stmt s(db_, "INSERT INTO issues(counter, period, cycle, value, repeat, mark_id) "
-                "VALUES(?1, ?2, ?3, ?4, ?5, ?6)");
+    SqliteStmt s(db_, "INSERT INTO issues(counter, period, cycle, value, repeat, mark_id) "
+                      "VALUES(?1, ?2, ?3, ?4, ?5, ?6)");
     s.bind(1, i.counter).bind(2, i.period).bind(3, i.cycle).bind(4, i.value).bind(5, i.repeat)
         .bind(6, mark_id);
-    s.step();
+    s.finish();
   }
 
   void insert_outcome(std::int64_t mark_id, const OutcomeRecord& o) override {
-    Stmt s(db_, "INSERT INTO outcomes(mark_id, time_utc, outcome, message, figures) "
-                "VALUES(?1, ?2, ?3, ?4, ?5)");
+    SqliteStmt s(db_, "INSERT INTO outcomes(mark_id, time_utc, outcome, message, figures) "
+                      "VALUES(?1, ?2, ?3, ?4, ?5)");
     s.bind(1, mark_id).bind(2, o.time_utc).bind(3, std::string(to_string(o.outcome)))
         .bind(4, o.message).bind(5, o.figures.dump());
-    s.step();
+    s.finish();
   }
 
-  std::optional<std::pair<std::int64_t, std::int64_t>> issued_range(
-      const std::string& counter, const std::string& period, std::int64_t cycle) override {
-    Stmt s(db_, "SELECT MIN(value), MAX(value) FROM issues WHERE counter = ?1 AND period = ?2 "
-                "AND cycle = ?3");
-    s.bind(1, counter).bind(2, period).bind(3, cycle);
-    if (!s.step() || s.null(0)) return std::nullopt;
-    return std::make_pair(s.i64(0), s.i64(1));
+  void insert_text(const std::string& text, const std::string& object, std::int64_t mark_id) override {
+    SqliteStmt s(db_, "INSERT INTO marked_texts(text, object, mark_id) VALUES(?1, ?2, ?3)");
+    s.bind(1, text).bind(2, object).bind(3, mark_id);
+    s.finish();
+  }
+
+  void lock_data_list(const std::string&) override {}  // the transaction holds the write lock
+
+  void insert_data_row(const std::string& key, const std::string& list, std::int64_t row,
+                       std::int64_t mark_id) override {
+    SqliteStmt s(db_, "INSERT INTO data_rows(row_key, list, row, mark_id) VALUES(?1, ?2, ?3, ?4)");
+    s.bind(1, key).bind(2, list).bind(3, row).bind(4, mark_id);
+    s.finish();
   }
 
   std::vector<std::int64_t> pending_marks(const std::string& station) override {
-    Stmt s(db_, "SELECT m.id FROM marks m LEFT JOIN outcomes o ON o.mark_id = m.id "
-                "WHERE m.station = ?1 AND o.mark_id IS NULL ORDER BY m.id");
+    SqliteStmt s(db_, "SELECT m.id FROM marks m LEFT JOIN outcomes o ON o.mark_id = m.id "
+                      "WHERE m.station = ?1 AND o.mark_id IS NULL ORDER BY m.id");
     s.bind(1, station);
     std::vector<std::int64_t> ids;
     while (s.step()) ids.push_back(s.i64(0));
     return ids;
-  }
-
-  std::vector<AuditRow> audit(const std::string& since) override {
-    Stmt s(db_, (std::string(kAuditSelect) + "WHERE m.time_utc >= ?1 ORDER BY m.id").c_str());
-    s.bind(1, since);
-    std::vector<AuditRow> rows;
-    while (s.step()) rows.push_back(audit_from(s));
-    return rows;
-  }
-
-  std::optional<AuditRow> audit_row(std::int64_t id) override {
-    Stmt s(db_, (std::string(kAuditSelect) + "WHERE m.id = ?1").c_str());
-    s.bind(1, id);
-    if (!s.step()) return std::nullopt;
-    return audit_from(s);
-  }
-
-  std::vector<std::pair<std::string, CounterState>> counters() override {
-    Stmt s(db_, "SELECT next_value, used, period, cycle, exhausted, name FROM counters ORDER BY name");
-    std::vector<std::pair<std::string, CounterState>> out;
-    while (s.step()) out.emplace_back(s.text(5), state_from(s));
-    return out;
-  }
-
-  std::vector<std::pair<Issue, std::int64_t>> issues(const std::string& counter) override {
-    Stmt s(db_, "SELECT period, cycle, value, repeat, mark_id FROM issues WHERE counter = ?1 "
-                "ORDER BY mark_id, value");
-    s.bind(1, counter);
-    std::vector<std::pair<Issue, std::int64_t>> out;
-    while (s.step())
-      out.push_back({Issue{counter, s.i64(2), s.i64(3), s.text(0), s.i64(1)}, s.i64(4)});
-    return out;
   }
 
   void commit() override {
@@ -262,96 +269,150 @@ class SqliteTransaction : public StoreTransaction {
   }
 
  private:
-  static CounterState state_from(const Stmt& q) {
-    CounterState s;
-    s.next = q.i64(0);
-    s.used = q.i64(1);
-    s.period = q.text(2);
-    s.cycle = q.i64(3);
-    s.exhausted = q.i64(4) != 0;
-    return s;
-  }
-
-  const Db& db_;
   bool done_ = false;
 };
 
-class SqliteBackend : public StoreBackend {
+// A file: URI for `path` (read-only and immutable opens), its reserved characters escaped.
+std::string file_uri(const std::string& path, const char* query) {
+  std::string uri = "file:";
+  for (unsigned char c : std::filesystem::absolute(path).string()) {
+    if (c == '%' || c == '?' || c == '#' || c < 0x21 || c >= 0x7f) {
+      char hex[4];
+      std::snprintf(hex, sizeof hex, "%%%02X", c);
+      uri += hex;
+    } else {
+      uri += static_cast<char>(c);
+    }
+  }
+  return uri + "?" + query;
+}
+
+class SqliteBackend final : public StoreBackend {
  public:
-  SqliteBackend(const std::string& path, StoreAccess access) : db_(path) {
-    if (access == StoreAccess::existing && !std::filesystem::exists(path))
-      throw StoreError("serial store " + path + " does not exist (a job's store is created by "
-                       "its first mark; name another with --store)");
-    const int flags = SQLITE_OPEN_READWRITE | SQLITE_OPEN_FULLMUTEX |
-                      (access == StoreAccess::create ? SQLITE_OPEN_CREATE : 0);
-    if (sqlite3_open_v2(path.c_str(), db_.out(), flags, nullptr) != SQLITE_OK) db_.fail("open");
-    sqlite3_extended_result_codes(db_.get(), 1);
-    sqlite3_busy_timeout(db_.get(), 30000);
-    db_.exec("PRAGMA journal_mode=WAL");
-    db_.exec("PRAGMA synchronous=FULL");
-    db_.exec("PRAGMA foreign_keys=ON");
-    db_.exec("BEGIN IMMEDIATE");
-    try {
-      db_.exec(kSchema);
-      Stmt get(db_, "SELECT value FROM meta WHERE key = 'format'");
-      if (get.step()) {
-        if (get.text(0) != kFormat)
-          throw StoreError("serial store " + path + " has format '" + get.text(0) +
-                           "', this program reads " + kFormat);
-      } else {
-        Stmt put(db_, "INSERT INTO meta(key, value) VALUES('format', ?1)");
-        put.bind(1, std::string(kFormat));
-        put.step();
-      }
-      db_.exec("COMMIT");
-    } catch (...) {
-      sqlite3_exec(db_.get(), "ROLLBACK", nullptr, nullptr, nullptr);
-      throw;
+  SqliteBackend(const std::string& path, StoreAccess access, const SqliteOptions& options)
+      : path_(path), options_(options), read_only_(access == StoreAccess::read_only) {
+    if (access != StoreAccess::create && !std::filesystem::exists(path))
+      throw StoreError("serial store " + path + " does not exist (a store is created by `marker serial "
+                       "create NAME` or `marker mark --job FILE --create-counters`)",
+                       StoreErrorKind::missing);
+    if (read_only_) {
+      open_read_only();
+    } else {
+      const int flags = SQLITE_OPEN_READWRITE | SQLITE_OPEN_FULLMUTEX |
+                        (access == StoreAccess::create ? SQLITE_OPEN_CREATE : 0);
+      db_ = std::make_unique<SqliteDb>(path, flags, options.fault_injection ? sqlite_fault_vfs() : nullptr);
+      wire_busy_wait();
+      db_->exec("PRAGMA journal_mode=WAL");
+      db_->exec("PRAGMA synchronous=FULL");
+      db_->exec("PRAGMA foreign_keys=ON");
+      format_ = create_or_upgrade(*db_);
     }
   }
   ~SqliteBackend() override {
-    for (auto& [name, fd] : station_locks_) close(fd);
+    heal();
+    db_.reset();     // SQLite's connection first: closing the lock descriptor drops its locks
+    locks_.reset();
   }
 
   std::unique_ptr<StoreTransaction> begin() override {
-    return std::make_unique<SqliteTransaction>(db_);
+    if (read_only_) throw StoreError("serial store " + path_ + " is open read-only");
+    return std::make_unique<SqliteTransaction>(*db_, format_.version);
   }
-  std::string describe() const override { return "sqlite:" + db_.path(); }
+  std::unique_ptr<StoreReader> begin_read() override {
+    return std::make_unique<SqliteReader>(*db_, format_.version);
+  }
+  std::string describe() const override { return "sqlite:" + path_; }
+  const std::string& store_id() const override { return format_.store_id; }
 
   bool claim_station(const std::string& station) override {
-    if (station_locks_.count(station)) return true;
-    // A lock file beside the store per station; the kernel drops the lock when the process
-    // dies, however it dies.
-    std::string safe;
-    for (unsigned char c : station) {
-      if (std::isalnum(c) || c == '-' || c == '_') {
-        safe += static_cast<char>(c);
-      } else {
-        char hex[4];
-        std::snprintf(hex, sizeof hex, "%%%02X", c);
-        safe += hex;
-      }
+    if (read_only_) throw StoreError("serial store " + path_ + " is open read-only: no station marks through it");
+    if (!locks_) locks_ = std::make_unique<StationLocks>(path_, path_);
+    return locks_->claim(station);
+  }
+
+  std::vector<std::string> check(bool quick) override {
+    std::vector<std::string> problems;
+    {
+      SqliteStmt s(*db_, quick ? "PRAGMA quick_check" : "PRAGMA integrity_check");
+      while (s.step())
+        if (s.text(0) != "ok") problems.push_back(s.text(0));
     }
-    const std::string lock = db_.path() + ".station-" + safe + ".lock";
-    const int fd = open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd < 0) throw StoreError("serial store " + db_.path() + ": cannot open " + lock);
-    if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
-      close(fd);
-      return false;
+    if (!quick) {
+      SqliteStmt s(*db_, "PRAGMA foreign_key_check");
+      while (s.step())
+        problems.push_back("table " + s.text(0) + " row " + s.text(1) + ": refers to a missing row of " + s.text(2));
     }
-    station_locks_[station] = fd;
-    return true;
+    return problems;
+  }
+
+  void reconnect() override {}  // a file needs no connection
+  void set_cancel(std::function<bool()> cancel) override { cancel_ = std::move(cancel); }
+
+  void provoke(StoreStep, StoreFaultKind kind) override {
+    heal();
+    switch (kind) {
+      case StoreFaultKind::locked:
+        // A second connection holding the write lock, as another process would.
+        holder_ = std::make_unique<SqliteDb>(path_, SQLITE_OPEN_READWRITE);
+        holder_->exec("BEGIN IMMEDIATE");
+        return;
+      case StoreFaultKind::full:
+      case StoreFaultKind::io:
+        if (!options_.fault_injection)
+          throw StoreError("serial store " + path_ + ": a disk fault needs the store opened for fault injection");
+        sqlite_fail_writes(sqlite3_db_filename(db_->get(), "main"),
+                           kind == StoreFaultKind::full ? SQLITE_FULL : SQLITE_IOERR_WRITE);
+        return;
+      case StoreFaultKind::stopped:
+        throw StoreError("serial store " + path_ + ": an SQLite store has no server to stop (inject locked, full or io)");
+    }
+  }
+
+  void heal() override {
+    holder_.reset();
+    if (options_.fault_injection) sqlite_fail_writes("", 0);
   }
 
  private:
-  Db db_;
-  std::map<std::string, int> station_locks_;
+  void wire_busy_wait() {
+    db_->set_busy_wait(options_.busy_timeout_ms, [this] { return cancel_ && cancel_(); });
+  }
+
+  // Read-only: the store is never written, not even its schema. A WAL store needs its -shm
+  // beside it; where this process can create none (a read-only folder) and no -wal is left (so
+  // no writer is active), the file is opened immutable.
+  void open_read_only() {
+    const int flags = SQLITE_OPEN_READONLY | SQLITE_OPEN_URI | SQLITE_OPEN_FULLMUTEX;
+    try {
+      db_ = std::make_unique<SqliteDb>(file_uri(path_, "mode=ro"), flags, nullptr, path_);
+      wire_busy_wait();
+      format_ = read_format(*db_);
+      return;
+    } catch (const StoreError& e) {
+      const auto dir = std::filesystem::absolute(path_).parent_path();
+      const bool writer_possible = ::access(dir.c_str(), W_OK) == 0 || std::filesystem::exists(path_ + "-wal");
+      if (e.kind() != StoreErrorKind::io || writer_possible) throw;
+    }
+    db_ = std::make_unique<SqliteDb>(file_uri(path_, "immutable=1"), flags, nullptr, path_);
+    wire_busy_wait();
+    format_ = read_format(*db_);
+  }
+
+  std::string path_;
+  SqliteOptions options_;
+  bool read_only_;
+  std::unique_ptr<SqliteDb> db_;
+  SqliteFormat format_;
+  std::unique_ptr<StationLocks> locks_;
+  std::unique_ptr<SqliteDb> holder_;  // provoke(locked)
+  std::function<bool()> cancel_;
 };
 
 }  // namespace
 
-std::unique_ptr<StoreBackend> open_sqlite_store(const std::string& path, StoreAccess access) {
-  return std::make_unique<SqliteBackend>(path, access);
+std::unique_ptr<StoreBackend> open_sqlite_store(const std::string& path, StoreAccess access,
+                                                const SqliteOptions& options) {
+  return std::make_unique<SqliteBackend>(path, access, options);
 }
 
 }  // namespace mark

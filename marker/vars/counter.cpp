@@ -1,5 +1,9 @@
 #include "marker/vars/counter.hpp"
 
+#include <date/date.h>
+
+#include <cstdio>
+
 namespace mark {
 
 std::string_view to_string(EndPolicy p) { return p == EndPolicy::stop ? "stop" : "wrap"; }
@@ -70,6 +74,69 @@ std::string period_key(const CounterSpec& spec, SysTime now, const ShiftTable& s
     case ResetRule::shift: return shifts.at(spec.time_zone.local_seconds(now)).key;
   }
   return "";
+}
+
+namespace {
+
+// The start of a shift key "2026-03-05/C" as (date, minute of the day); nothing when the code is
+// not in the table.
+std::optional<std::pair<std::string, int>> shift_start(const std::string& key, const ShiftTable& shifts) {
+  const std::size_t slash = key.find('/');
+  if (slash == std::string::npos) return std::nullopt;
+  const std::string code = key.substr(slash + 1);
+  for (const Shift& s : shifts.shifts())
+    if (s.code == code) return std::make_pair(key.substr(0, slash), s.start_minute);
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<SysTime> period_start(const CounterSpec& spec, const std::string& key, const ShiftTable& shifts) {
+  std::string date = key;
+  int minute = 0;
+  if (spec.reset == ResetRule::shift) {
+    const auto s = shift_start(key, shifts);
+    if (!s) return std::nullopt;
+    date = s->first;
+    minute = s->second;
+  } else if (spec.reset != ResetRule::midnight) {
+    return std::nullopt;
+  }
+  int y = 0;
+  unsigned m = 0, d = 0;
+  if (date.size() != 10 || std::sscanf(date.c_str(), "%4d-%2u-%2u", &y, &m, &d) != 3) return std::nullopt;
+  const date::year_month_day ymd{date::year{y}, date::month{m}, date::day{d}};
+  if (!ymd.ok()) return std::nullopt;
+  const std::chrono::seconds local = date::sys_days{ymd}.time_since_epoch() + std::chrono::minutes{minute};
+  return spec.time_zone.from_local_seconds(local);
+}
+
+bool period_before(const CounterSpec& spec, const std::string& a, const std::string& b,
+                   const ShiftTable& shifts) {
+  if (a.empty() || b.empty()) return false;
+  switch (spec.reset) {
+    case ResetRule::never: return false;
+    case ResetRule::midnight:
+      // "YYYY-MM-DD": text order is date order; a key of the shift rule is not comparable.
+      return a.size() == 10 && b.size() == 10 && a < b;
+    case ResetRule::shift: {
+      const auto sa = shift_start(a, shifts), sb = shift_start(b, shifts);
+      return sa && sb && *sa < *sb;
+    }
+  }
+  return false;
+}
+
+PeriodChoice current_period(const CounterSpec& spec, const CounterState& state, SysTime now,
+                            const ShiftTable& shifts) {
+  PeriodChoice c;
+  c.clock_period = period_key(spec, now, shifts);
+  c.period = c.clock_period;
+  if (c.period != state.period && period_before(spec, c.period, state.period, shifts)) {
+    c.period = state.period;
+    c.stepped_back = true;
+  }
+  return c;
 }
 
 Issue take(const CounterSpec& spec, CounterState& state, const std::string& period) {

@@ -85,6 +85,27 @@ class SerialLimitError : public InputError {
 // the shift occurrence ("2026-03-05/C"; needs the job's shifts).
 std::string period_key(const CounterSpec& spec, SysTime now, const ShiftTable& shifts);
 
+// Periods only move forward. The period a part belongs to at `now`: the period of `now`, unless
+// the clock stands behind the stored period (stepped back across a midnight or a shift start) —
+// then the stored period is kept and `stepped_back` says so, because restarting a period the
+// counter has already counted in would issue its values a second time.
+struct PeriodChoice {
+  std::string period;
+  bool stepped_back = false;
+  std::string clock_period;  // the period of `now` (differs from `period` when stepped back)
+};
+PeriodChoice current_period(const CounterSpec& spec, const CounterState& state, SysTime now,
+                            const ShiftTable& shifts);
+// The instant period `key` began: its local midnight, or its shift's start, in the counter's
+// time zone. Nothing for "" and for a key of another rule (or of a shift no longer in the table).
+// A part whose clock stands behind its counter's period is dated at this instant, so its date
+// and shift fields name the period its number belongs to.
+std::optional<SysTime> period_start(const CounterSpec& spec, const std::string& key, const ShiftTable& shifts);
+// Whether reset period `a` began before `b` (keys of period_key(); "" — never reset — and keys
+// of another reset rule or of a shift no longer in the table are not ordered: false).
+bool period_before(const CounterSpec& spec, const std::string& a, const std::string& b,
+                   const ShiftTable& shifts);
+
 // Issues the next value and advances `state`. Throws SerialLimitError (state unchanged) when
 // the counter is past its limit and stops there.
 Issue take(const CounterSpec& spec, CounterState& state, const std::string& period);

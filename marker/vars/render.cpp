@@ -40,6 +40,15 @@ void render(const TextTemplate& t, const MarkValues& v, std::string& out) {
         out += *value;
         break;
       }
+      case FieldKind::column: {
+        const std::string* value = find(v.columns, f.text);
+        if (!value)
+          throw InputError("{col:" + f.text + "}: " +
+                           (v.columns ? "the data list has no column \"" + f.text + "\""
+                                      : std::string("the job has no data list (\"data\")")));
+        out += *value;
+        break;
+      }
       case FieldKind::shift: {
         if (!v.shifts || v.shifts->empty())
           throw InputError("{shift} needs the job's shift start times (\"shifts\")");

@@ -19,6 +19,7 @@ struct MarkValues {
   const std::map<std::string, std::string>* variables = nullptr;
   const std::map<std::string, CounterSpec>* counters = nullptr;
   const std::map<std::string, std::int64_t>* serials = nullptr;  // values this part consumed
+  const std::map<std::string, std::string>* columns = nullptr;   // the part's data-list row
 };
 
 // Appends the rendered text to `out`. Throws InputError naming the field for a variable that

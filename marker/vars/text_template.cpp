@@ -74,6 +74,12 @@ class TemplateParser {
       if (!name_ok(f.text)) fail(at, "{var:NAME} needs a name of letters, digits, _ - or .");
       return f;
     }
+    if (head == "col") {
+      f.kind = FieldKind::column;
+      f.text = std::string(rest);
+      if (f.text.empty()) fail(at, "{col:NAME} needs the name of a column of the job's data list");
+      return f;
+    }
     if (head == "shift") {
       if (colon != std::string_view::npos) fail(at, "{shift} takes no options");
       f.kind = FieldKind::shift;
@@ -82,7 +88,7 @@ class TemplateParser {
     if (!name_ok(head))
       fail(at, "'{" + std::string(body) +
                    "}' is not a field: use {COUNTER}, {COUNTER:OPTIONS}, {date:FORMAT}, "
-                   "{var:NAME} or {shift}");
+                   "{var:NAME}, {col:NAME} or {shift}");
     f.kind = FieldKind::counter;
     f.text = std::string(head);
     std::string_view opts = rest;
@@ -167,6 +173,13 @@ std::vector<std::string> TextTemplate::variables() const {
   std::vector<std::string> names;
   for (const TemplateField& f : fields_)
     if (f.kind == FieldKind::var) add_unique(names, f.text);
+  return names;
+}
+
+std::vector<std::string> TextTemplate::columns() const {
+  std::vector<std::string> names;
+  for (const TemplateField& f : fields_)
+    if (f.kind == FieldKind::column) add_unique(names, f.text);
   return names;
 }
 

@@ -8,6 +8,7 @@
 //   {date} {date:FORMAT}   the date and time in the job's time zone, strftime FORMAT
 //                          (default %Y-%m-%d): {date:%y%j} is year and day of the year
 //   {var:NAME}             a value set from outside for each mark (--set NAME=VALUE)
+//   {col:NAME}             column NAME of the part's row of the job's data list (a CSV file)
 //   {shift}                the code of the shift running now (the job's shift start times)
 //   {{ and }}              literal braces
 //
@@ -21,7 +22,7 @@
 
 namespace mark {
 
-enum class FieldKind { literal, counter, date, var, shift };
+enum class FieldKind { literal, counter, date, var, shift, column };
 
 struct TemplateField {
   FieldKind kind = FieldKind::literal;
@@ -43,6 +44,7 @@ class TextTemplate {
   // Names used, each once, in order of first use.
   std::vector<std::string> counters() const;
   std::vector<std::string> variables() const;
+  std::vector<std::string> columns() const;  // {col:NAME}
   bool uses(FieldKind kind) const;
   // No fields besides literal text: the same text for every part.
   bool constant() const;

@@ -7,6 +7,7 @@
 #include FT_OUTLINE_H
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -46,11 +47,11 @@ struct TrueOutline {
 };
 
 // FreeType's own view of a glyph, independent of the loader under test.
-TrueOutline true_outline(char32_t cp) {
+TrueOutline true_outline(char32_t cp, const std::string& path = kDejaVu) {
   FT_Library lib;
   EXPECT_EQ(FT_Init_FreeType(&lib), 0);
   FT_Face face;
-  EXPECT_EQ(FT_New_Face(lib, kDejaVu.c_str(), 0, &face), 0);
+  EXPECT_EQ(FT_New_Face(lib, path.c_str(), 0, &face), 0);
   EXPECT_EQ(FT_Load_Glyph(face, FT_Get_Char_Index(face, cp), FT_LOAD_NO_SCALE), 0);
   TrueOutline out;
   out.contours = face->glyph->outline.n_contours;
@@ -143,6 +144,51 @@ std::vector<Element> lit(const Glyph& g) {
   return out;
 }
 
+struct BothWays {
+  double fit_to_curve = 0, curve_to_fit = 0;
+};
+
+
+// Distance from q to the nearest segment of the outline. The segments' end points bound it from
+// above, and a segment whose control-point box (which holds the whole segment) lies farther away
+// cannot be nearer, so only a few segments are measured exactly.
+double distance_to(const TrueOutline& truth, const Point& q) {
+  double best = INFINITY;
+  for (const Segment& s : truth.segments) best = std::min({best, (s.p.front() - q).norm(), (s.p.back() - q).norm()});
+  for (const Segment& s : truth.segments) {
+    Point lo = s.p[0], hi = s.p[0];
+    for (const Point& c : s.p) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+    const Point outside = (lo - q).cwiseMax(q - hi).cwiseMax(Point(0, 0));
+    if (outside.norm() < best) best = std::min(best, distance_to(s, q));
+  }
+  return best;
+}
+
+// The largest distance from the fit to the true outline and from the outline (sampled `samples`
+// times a segment) to the fit; `stride` > 1 measures from every stride-th element and segment
+// only (the 15 000-element glyph), still against the whole of the other side.
+BothWays distances_both_ways(const std::vector<Element>& fit, const TrueOutline& truth, int samples,
+                             std::size_t stride = 1) {
+  BothWays d;
+  for (std::size_t k = 0; k < fit.size(); k += stride)
+    for (int j = 0; j <= 16; ++j) d.fit_to_curve = std::max(d.fit_to_curve, distance_to(truth, fit[k].point_at(j / 16.0)));
+  std::vector<Box> boxes;
+  for (const Element& e : fit) boxes.push_back(e.bounds());
+  for (std::size_t n = 0; n < truth.segments.size(); n += stride)
+    for (int i = 0; i <= samples; ++i) {
+      const Segment& s = truth.segments[n];
+      const Point q = s.at(static_cast<double>(i) / samples);
+      double best = INFINITY;  // the same pruning by end points and boxes as above
+      for (const Element& e : fit) best = std::min({best, (e.start() - q).norm(), (e.end() - q).norm()});
+      for (std::size_t k = 0; k < fit.size(); ++k) {
+        const Point outside = (boxes[k].min - q).cwiseMax(q - boxes[k].max).cwiseMax(Point(0, 0));
+        if (outside.norm() < best) best = std::min(best, distance_to(fit[k], q));
+      }
+      d.curve_to_fit = std::max(d.curve_to_fit, best);
+    }
+  return d;
+}
+
 TEST(OutlineFont, DejaVuSansLoadsWithTheFaceMetrics) {
   const StrokeFont& f = dejavu();
   const TrueOutline h = true_outline(U'H');
@@ -188,23 +234,31 @@ TEST(OutlineFont, RoundGlyphIsArcsWithinToleranceOfTheTrueOutlineBothWays) {
       EXPECT_EQ(true_lines, 0u);
       EXPECT_EQ(lines, 0u) << "'O' must be circular arcs only";
     }
-    double fit_to_curve = 0, curve_to_fit = 0;
-    for (const Element& e : fit)
-      for (int j = 0; j <= 16; ++j) {
-        double best = INFINITY;
-        const Point q = e.point_at(j / 16.0);
-        for (const Segment& s : truth.segments) best = std::min(best, distance_to(s, q));
-        fit_to_curve = std::max(fit_to_curve, best);
-      }
-    for (const Segment& s : truth.segments)
-      for (int i = 0; i <= 300; ++i) {
-        double best = INFINITY;
-        const Point q = s.at(i / 300.0);
-        for (const Element& e : fit) best = std::min(best, distance_to(e, q));
-        curve_to_fit = std::max(curve_to_fit, best);
-      }
+    const auto [fit_to_curve, curve_to_fit] = distances_both_ways(fit, truth, 300);
     EXPECT_LE(fit_to_curve, tol + 1e-9) << describe_code_point(cp);
     EXPECT_LE(curve_to_fit, tol + 1e-9) << describe_code_point(cp);
+  }
+}
+
+// CFF (cubic) outlines, a small TrueType and the 2000-point hostile glyph: the fit stays within
+// the tolerance of FreeType's own outline both ways.
+TEST(OutlineFont, CffTrueTypeAndTheHostileGlyphFitWithinToleranceBothWays) {
+  const std::string dir = std::string(MARKER_SOURCE_DIR) + "/tests/fonts/data/outline/";
+  for (const auto& [file, cp] : {std::pair{"sample_cff.otf", U'O'}, {"sample_cff.otf", U'H'}, {"sample.ttf", U'O'},
+                                 {"blob_1.ttf", U'A'}}) {
+    const std::size_t stride = std::string(file) == "blob_1.ttf" ? 101 : 1;
+    const std::string path = dir + file;
+    const StrokeFont f = load_outline_font(path);
+    const TrueOutline truth = true_outline(cp, path);
+    const double tol = kOutlineToleranceEm * truth.units_per_em;
+    const auto [fit_to_curve, curve_to_fit] = distances_both_ways(lit(f.glyph(cp)), truth, 60, stride);
+    EXPECT_LE(fit_to_curve, tol + 1e-9) << file;
+    EXPECT_LE(curve_to_fit, tol + 1e-9) << file;
+    if (std::string(file) == "sample_cff.otf") {
+      const bool cubic = std::any_of(truth.segments.begin(), truth.segments.end(),
+                                     [](const Segment& s) { return s.p.size() == 4; });
+      EXPECT_EQ(cubic, cp == U'O') << "CFF outlines are cubics";
+    }
   }
 }
 
@@ -268,7 +322,12 @@ TEST(OutlineFont, BrokenFilesAreFontFileErrorsNamingTheFile) {
   expect_font_error_naming((dir / "truncated.ttf").string());
   expect_font_error_naming((dir / "text.ttf").string());
   expect_font_error_naming((dir / "empty.otf").string());
-  EXPECT_THROW(load_outline_font((dir / "missing.ttf").string()), FontFileError);
+  try {
+    load_outline_font((dir / "missing.ttf").string());
+    ADD_FAILURE() << "a missing file loaded";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot read font file '" + (dir / "missing.ttf").string() + "': No such file or directory");
+  }
   fs::remove_all(dir);
 }
 

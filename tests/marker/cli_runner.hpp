@@ -2,6 +2,8 @@
 // Runs the `marker` command line in-process and captures what it prints, for the CLI tests.
 #include <gtest/gtest.h>
 
+#include <stdlib.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -24,6 +26,15 @@ inline CliResult run_cli(std::vector<std::string> args) {
   testing::internal::CaptureStderr();
   const int code = cli::run(static_cast<int>(argv.size()), argv.data());
   return {code, testing::internal::GetCapturedStdout(), testing::internal::GetCapturedStderr()};
+}
+
+// The station's state (its default serial store, its outcome journals) in `dir`/state, so a
+// test's production commands meet a store of their own (marker/store/store_location.hpp).
+inline std::filesystem::path use_station_state(const std::filesystem::path& dir) {
+  const std::filesystem::path state = dir / "state";
+  ::unsetenv("STATE_DIRECTORY");
+  ::setenv("XDG_STATE_HOME", state.c_str(), 1);
+  return state / "marker";
 }
 
 // A per-test temporary folder, empty.

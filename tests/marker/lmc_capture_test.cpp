@@ -7,29 +7,23 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "driver/lmc/capture_link.hpp"
+#include "driver/lmc/job_encoder.hpp"
 #include "driver/lmc/lmc_device.hpp"
 #include "fonts/catalog.hpp"
+#include "marker/job/device_program.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/intended_strokes.hpp"
 #include "marker/job/job.hpp"
 #include "tests/marker/cli_runner.hpp"
+#include "tests/marker/polyline_distance.hpp"
 
 namespace mark {
 namespace {
 
-double distance_to(const std::vector<std::vector<Vec2>>& lines, Vec2 p) {
-  double best = 1e9;
-  for (const auto& l : lines)
-    for (std::size_t i = 1; i < l.size(); ++i) {
-      const Vec2 a = l[i - 1], d = l[i] - a;
-      const double len2 = dot(d, d);
-      const double t = len2 > 0 ? std::clamp(dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
-      best = std::min(best, norm(p - (a + t * d)));
-    }
-  return best;
-}
+using test::distance_to;
 
 TEST(LmcCapture, LitMarkEndPointsLieOnTheIntendedStrokes) {
   const auto path = test::fresh_temp_file("lmc_capture_test", "serial.lmc");
@@ -48,7 +42,7 @@ TEST(LmcCapture, LitMarkEndPointsLieOnTheIntendedStrokes) {
     ASSERT_EQ(r.outcome, JobOutcome::done);
   }
   const double tol = o.chord_tolerance_mm;
-  const lmc::FieldUnits units(o.field_mm);
+  const lmc::FieldUnits units(o.field_mm, o.axes, o.polygon_delay_unit);
   const double unit_mm = std::sqrt(2.0) / units.units_per_mm();  // truncation of both words
   const auto intended = intended_polylines(r.job.figure, 0.002);
 
@@ -84,6 +78,63 @@ TEST(LmcCapture, LitMarkEndPointsLieOnTheIntendedStrokes) {
   std::printf("%zu lit MarkTo: end points within %.2f µm, chord middles within %.2f µm "
               "(tolerance %.1f µm)\n",
               marks, worst_end * 1e3, worst_mid * 1e3, tol * 1e3);
+}
+
+// What a job's list costs now that every list sets every setting, and what it saved that a pen
+// keeps one MarkSpeed: the same job as the host planned it before (blanking at whole-tick
+// speeds, stroke by stroke), encoded by the same encoder, counted word by word.
+TEST(LmcCapture, OneMarkSpeedPerPenAndEverySettingInThePreamble) {
+  JobSpec spec;
+  spec.text = "SN 0815-B";
+  spec.font = open_font(kBuiltinFontName);
+  spec.layout.height_mm = 3;
+  spec.head = head_sl10();
+  spec.pen = pen_for_head(spec.head, CornerStrategy::blanking, 1000);
+  const lmc::LmcOptions o;
+  const lmc::FieldUnits units(o.field_mm, o.axes, o.polygon_delay_unit);
+  DeviceDescription desc;
+  desc.level = DeviceLevel::commands;
+  desc.field_mm = o.field_mm;
+  desc.chord_tolerance_mm = o.chord_tolerance_mm;
+  const Figure figure = job_figure(spec);
+  struct Count {
+    std::size_t words = 0, parameters = 0, mark_speeds = 0, jump_delays = 0;
+    std::set<std::uint16_t> mark_speed_values;
+  };
+  const auto count = [&](const Plan& plan) {
+    const DeviceProgram program = device_program(plan, spec.laser, desc);
+    Count c;
+    lmc::JobEncoder enc(units, [&](const lmc::ListPacket& p, const lmc::PacketInfo&) {
+      for (std::size_t i = 0; i < p.used(); ++i) {
+        const lmc::Word w = lmc::load(p.bytes().data() + 12 * i);
+        ++c.words;
+        if (w.opcode() == std::uint16_t(lmc::Op::MarkSpeed)) {
+          ++c.mark_speeds;
+          c.mark_speed_values.insert(w.p(1));
+        }
+        c.jump_delays += w.opcode() == std::uint16_t(lmc::Op::JumpDelay);
+      }
+    });
+    const std::vector<lmc::BoardPen> pens{lmc::encode_pen(program.pen, 0, units)};
+    enc.start_list(o.open_mo_delay_s, 1);
+    enc.apply_pen(pens[0]);
+    enc.add(program.commands, 0, pens);
+    enc.finish(program.commands.size());
+    c.parameters = enc.figures().parameter_commands;
+    return c;
+  };
+  const Count now = count(plan_for_device(figure, spec.pen, spec.order));
+  Pen whole_ticks = spec.pen;  // the plan as it was made for a board before
+  Plan before = plan_figure(figure, whole_ticks, spec.order);
+  const Count was = count(before);
+  std::printf("SN 0815-B, one list: %zu words (%zu parameters, %zu MarkSpeed with %zu values, %zu JumpDelay) "
+              "against %zu words (%zu parameters, %zu MarkSpeed with %zu values) with whole-tick speeds\n",
+              now.words, now.parameters, now.mark_speeds, now.mark_speed_values.size(), now.jump_delays, was.words,
+              was.parameters, was.mark_speeds, was.mark_speed_values.size());
+  EXPECT_EQ(now.mark_speeds, 1u);  // the preamble's: one pen, one speed
+  EXPECT_GE(was.mark_speed_values.size(), 2u);  // the speed words alternated (595 / 596 …)
+  EXPECT_GT(was.mark_speeds, 1u);
+  EXPECT_GE(now.jump_delays, 1u);  // the preamble's, whatever the pen's jump delay
 }
 
 TEST(LmcCapture, MarkAndFrameOnTheCommandLine) {

@@ -22,15 +22,17 @@ std::string error_of(const std::function<void()>& f) {
   return "";
 }
 
+// meerk40t's test vector with EzCad's (its default) axes: the same bytes but for one word, the
+// JumpDelay(0) every list carries (lmc_test_support.hpp).
 TEST(LmcCodec, GoldenRectangleByteForByte) {
-  const FieldUnits units(110);
+  const FieldUnits units = test::golden_units();
   std::vector<std::vector<std::uint8_t>> packets;
   JobEncoder enc(units, [&](const ListPacket& p, const PacketInfo& info) {
     packets.emplace_back(p.bytes().begin(), p.bytes().end());
     EXPECT_TRUE(info.last);
     EXPECT_EQ(info.commands_complete, 5u);
   });
-  const BoardPen pen = encode_pen(test::golden_pen(), 0, units, LaserSource::fiber);
+  const BoardPen pen = encode_pen(test::golden_pen(), 0, units);
   enc.start_list(0.008, 0x0001);
   enc.apply_pen(pen);
   const auto commands = test::golden_rectangle_commands();
@@ -44,13 +46,20 @@ TEST(LmcCodec, GoldenRectangleByteForByte) {
     ASSERT_EQ(packets[0][i], expected[i]) << "byte " << i << " (command " << i / 12 << ": "
                                           << describe(load(packets[0].data() + i / 12 * 12), units)
                                           << ")";
-  EXPECT_EQ(enc.figures().list_commands, 17u);
+  // Word for word meerk40t's, with the one JumpDelay taken out.
+  std::vector<Word> ours;
+  for (std::size_t i = 0; i < 18; ++i) ours.push_back(load(packets[0].data() + 12 * i));
+  EXPECT_EQ(ours[10], word(Op::JumpDelay, 0, 0));
+  ours.erase(ours.begin() + 10);
+  EXPECT_EQ(ours, test::meerk40t_rectangle_words());
+  EXPECT_EQ(enc.figures().list_commands, 18u);
   EXPECT_EQ(enc.figures().moves, 5u);
   EXPECT_EQ(enc.figures().packets, 1u);
   // The estimate: jump √(20852² + 20853²) units at 1191 units/ms, four sides of 5958 units at
-  // 8 units/ms, the open-MO delay and the mark delay.
+  // 8 units/ms, three right-angle corners of 100 µs polygon delay, the open-MO delay and the mark
+  // delay.
   EXPECT_NEAR(enc.figures().estimated_s,
-              std::hypot(20852.0, 20853.0) / 1191e3 + 4 * 5958.0 / 8e3 + 0.008 + 0.0003, 1e-9);
+              std::hypot(20852.0, 20853.0) / 1191e3 + 4 * 5958.0 / 8e3 + 3 * 100e-6 + 0.008 + 0.0003, 1e-9);
 }
 
 TEST(LmcCodec, TableIsConsistent) {
@@ -238,7 +247,7 @@ TEST(LmcEncoder, SpeedsAndDelaysOnlyWhenTheyChange) {
   DevicePen pen = test::golden_pen();
   pen.mark_speed_mm_s = 1000;
   pen.jump_delay_s = 200e-6;
-  const BoardPen bp = encode_pen(pen, 0, units, LaserSource::fiber);
+  const BoardPen bp = encode_pen(pen, 0, units);
   enc.start_list(0, 1);
   enc.apply_pen(bp);
   // Two marks at the pen's speed: one MarkSpeed (from the pen); then a faster mark; then a
@@ -292,18 +301,18 @@ TEST(LmcEncoder, PacketsCarryWhatTheyComplete) {
     infos.push_back(i);
     EXPECT_TRUE(p.full() || i.last);
   });
-  const BoardPen bp = encode_pen(test::golden_pen(), 0, units, LaserSource::fiber);
+  const BoardPen bp = encode_pen(test::golden_pen(), 0, units);
   enc.start_list(0.008, 1);
-  enc.apply_pen(bp);  // 10 words so far
+  enc.apply_pen(bp);  // 11 words so far
   for (int i = 0; i < 600; ++i) enc.add(DeviceCommand::mark_to(i % 2 ? 1 : 2, 0.001 * i), std::uint64_t(i));
   enc.finish(600);
-  ASSERT_EQ(infos.size(), 3u);  // 10 + 600 + 2 (mark delay, EndOfList) = 612 words
-  EXPECT_EQ(infos[0].commands_complete, 246u);  // words 10..255 are commands 0..245
-  EXPECT_EQ(infos[1].commands_complete, 502u);
+  ASSERT_EQ(infos.size(), 3u);  // 11 + 600 + 2 (mark delay, EndOfList) = 613 words
+  EXPECT_EQ(infos[0].commands_complete, 245u);  // words 11..255 are commands 0..244
+  EXPECT_EQ(infos[1].commands_complete, 501u);
   EXPECT_EQ(infos[2].commands_complete, 600u);
   EXPECT_TRUE(infos[2].last);
   EXPECT_EQ(enc.figures().packets, 3u);
-  EXPECT_EQ(enc.figures().list_commands, 612u);
+  EXPECT_EQ(enc.figures().list_commands, 613u);
 }
 
 // The span form (what LmcDevice::submit uses) puts out the same packets, with the same
@@ -316,8 +325,8 @@ TEST(LmcEncoder, SpanGivesTheSameWordsAsOneByOne) {
   DevicePen p1 = p0;
   p1.mark_speed_mm_s = 900;
   p1.laser.power_pct = 40;
-  const std::vector<BoardPen> pens = {encode_pen(p0, 0, units, LaserSource::fiber),
-                                      encode_pen(p1, 1, units, LaserSource::fiber)};
+  const std::vector<BoardPen> pens = {encode_pen(p0, 0, units),
+                                      encode_pen(p1, 1, units)};
   std::vector<DeviceCommand> cs = {DeviceCommand::select_pen(0), DeviceCommand::jump_to(1, 1)};
   for (int i = 0; i < 700; ++i) {
     const double x = 1 + 0.01 * i;
@@ -385,16 +394,94 @@ TEST(LmcEncoder, PenRefusalsNameThePenAndTheValue) {
   const FieldUnits u(110);
   DevicePen p = test::golden_pen();
   p.laser.frequency_khz = 0;
-  EXPECT_NE(error_of([&] { encode_pen(p, 2, u, LaserSource::fiber); }).find("Q-switch frequency 0 kHz"),
-            std::string::npos);
+  EXPECT_NE(error_of([&] { encode_pen(p, 2, u); })
+                .find("lmc: pen 2: frequency 0 kHz is outside what a fiber source runs (Q-switched fiber: 1 .. 200 kHz)"),
+            std::string::npos)
+      << error_of([&] { encode_pen(p, 2, u); });
   p = test::golden_pen();
   p.laser_on_delay_s = 1;
-  EXPECT_NE(error_of([&] { encode_pen(p, 3, u, LaserSource::fiber); }).find("pen 3: laser-on delay 1e+06 µs"),
+  EXPECT_NE(error_of([&] { encode_pen(p, 3, u); }).find("pen 3: laser-on delay 1e+06 µs"),
             std::string::npos);
+  // A pulse width only on a MOPA source; 0 (the source's own) on any.
   p = test::golden_pen();
   p.laser.pulse_width_ns = 200;
-  EXPECT_FALSE(encode_pen(p, 0, u, LaserSource::fiber).pulse_width);
-  EXPECT_EQ(encode_pen(p, 0, u, LaserSource::mopa).pulse_width, 200);
+  EXPECT_NE(error_of([&] { encode_pen(p, 0, u); })
+                .find("lmc: pen 0: pulse width 200 ns: a fiber source (Q-switched fiber) has no settable pulse width"),
+            std::string::npos);
+  p.laser.source = LaserSource::co2;
+  p.laser.frequency_khz = 10;
+  EXPECT_NE(error_of([&] { encode_pen(p, 1, u); }).find("pen 1: pulse width 200 ns: a co2 source"), std::string::npos);
+  p.laser.source = LaserSource::mopa;
+  EXPECT_EQ(encode_pen(p, 0, u).pulse_width, 200);
+  p.laser.pulse_width_ns = 0;
+  EXPECT_FALSE(encode_pen(p, 0, u).pulse_width);
+}
+
+// Each source's laser words, against meerk40t's formulas worked by hand (balormk/controller.py:
+// fiber QSwitchPeriod = round(20000 / kHz), MarkCurrent = round(% × 4095 / 100); CO2 and UV
+// MarkFreq = round(10000 / kHz), SetCo2FPK = round(2000 / kHz) twice, MarkPowerRatio =
+// round(200 × % / kHz)); MOPA's pulse width in ns before them.
+TEST(LmcEncoder, EachSourceGetsItsOwnWords) {
+  const FieldUnits units(110);
+  const auto preamble = [&](LaserSource source, double khz, double pct, double ns) {
+    DevicePen p = test::golden_pen();
+    p.laser = {pct, khz, ns, source};
+    std::vector<Word> words;
+    JobEncoder enc(units, [&](const ListPacket& pk, const PacketInfo&) {
+      for (std::size_t i = 0; i < pk.used(); ++i) words.push_back(load(pk.bytes().data() + 12 * i));
+    });
+    enc.start_list(0, 1);
+    enc.apply_pen(encode_pen(p, 0, units));
+    enc.finish(0);
+    // The laser words: between JumpSpeed (word 3) and MarkSpeed.
+    std::vector<Word> laser;
+    for (std::size_t i = 3; i < words.size() && words[i].opcode() != std::uint16_t(Op::MarkSpeed); ++i)
+      laser.push_back(words[i]);
+    return laser;
+  };
+  using W = std::vector<Word>;
+  EXPECT_EQ(preamble(LaserSource::fiber, 20, 100, 0), (W{word(Op::QSwitchPeriod, 1000), word(Op::MarkCurrent, 4095)}));
+  EXPECT_EQ(preamble(LaserSource::fiber, 30, 60, 0), (W{word(Op::QSwitchPeriod, 667), word(Op::MarkCurrent, 2457)}));
+  EXPECT_EQ(preamble(LaserSource::mopa, 200, 60, 50),
+            (W{word(Op::FiberYLPMPulseWidth, 50), word(Op::QSwitchPeriod, 100), word(Op::MarkCurrent, 2457)}));
+  EXPECT_EQ(preamble(LaserSource::mopa, 200, 60, 0), (W{word(Op::QSwitchPeriod, 100), word(Op::MarkCurrent, 2457)}));
+  EXPECT_EQ(preamble(LaserSource::co2, 20, 60, 0),
+            (W{word(Op::MarkFreq, 500), word(Op::SetCo2Fpk, 100, 100), word(Op::MarkPowerRatio, 600)}));
+  EXPECT_EQ(preamble(LaserSource::uv, 40, 30, 0),
+            (W{word(Op::MarkFreq, 250), word(Op::SetCo2Fpk, 50, 50), word(Op::MarkPowerRatio, 150)}));
+}
+
+// A new list forgets everything: the same pen applied again sends every word again — JumpDelay
+// too (a board keeps its registers across lists, but an earlier list may not have reached it).
+TEST(LmcEncoder, EveryListSetsEverySetting) {
+  const FieldUnits units(110);
+  std::vector<std::vector<Word>> lists(1);
+  JobEncoder enc(units, [&](const ListPacket& pk, const PacketInfo& info) {
+    for (std::size_t i = 0; i < pk.used(); ++i) lists.back().push_back(load(pk.bytes().data() + 12 * i));
+    if (info.last) lists.emplace_back();
+  });
+  const BoardPen pen = encode_pen(test::golden_pen(), 0, units);
+  for (int k = 0; k < 2; ++k) {
+    enc.start_list(0, 1);
+    enc.apply_pen(pen);
+    enc.add(DeviceCommand::jump_to(1, 1), 0);
+    enc.add(DeviceCommand::mark_to(2, 1), 1);
+    enc.finish(2);
+  }
+  ASSERT_EQ(lists.size(), 3u);
+  // The same words, but for the jump's distance: the second starts where the first list left
+  // the mirrors.
+  ASSERT_EQ(lists[0].size(), lists[1].size());
+  for (std::size_t i = 0; i < lists[0].size(); ++i) {
+    Word a = lists[0][i], b = lists[1][i];
+    if (a.opcode() == std::uint16_t(Op::JumpTo)) a.w[4] = b.w[4] = 0;
+    EXPECT_EQ(a, b) << i;
+  }
+  std::set<std::uint16_t> ops;
+  for (const Word& w : lists[1]) ops.insert(w.opcode());
+  for (Op op : {Op::JumpSpeed, Op::QSwitchPeriod, Op::MarkCurrent, Op::MarkSpeed, Op::LaserOnDelay,
+                Op::LaserOffDelay, Op::PolygonDelay, Op::JumpDelay})
+    EXPECT_TRUE(ops.count(std::uint16_t(op))) << command_name(std::uint16_t(op));
 }
 
 }  // namespace
@@ -414,7 +501,7 @@ TEST(LmcEncoder, AFailedListLeavesNothingForTheNext) {
     for (std::size_t i = 0; i < kCommandsPerPacket; ++i) words.push_back(load(p.bytes().data() + 12 * i));
     sent.push_back(words);
   });
-  const BoardPen bp = encode_pen(test::golden_pen(), 0, units, LaserSource::fiber);
+  const BoardPen bp = encode_pen(test::golden_pen(), 0, units);
   enc.start_list(0.008, 1);
   enc.apply_pen(bp);
   EXPECT_THROW(

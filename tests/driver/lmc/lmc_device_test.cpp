@@ -25,14 +25,15 @@ using test::zigzag;
 // What the board should have received for a job: the same encoder, fresh.
 std::vector<std::vector<Word>> expected_packets(const DevicePen& pen,
                                                 const std::vector<DeviceCommand>& commands) {
-  const FieldUnits units(110);
+  const LmcOptions o = test::quick_options();
+  const FieldUnits units(o.field_mm, o.axes, o.polygon_delay_unit);
   std::vector<std::vector<Word>> out;
   JobEncoder enc(units, [&](const ListPacket& p, const PacketInfo&) {
     std::vector<Word> words;
     for (std::size_t i = 0; i < kCommandsPerPacket; ++i) words.push_back(load(p.bytes().data() + 12 * i));
     out.push_back(words);
   });
-  const BoardPen bp = encode_pen(pen, 0, units, LaserSource::fiber);
+  const BoardPen bp = encode_pen(pen, 0, units);
   enc.start_list(0.008, 1);
   enc.apply_pen(bp);
   for (std::size_t i = 0; i < commands.size(); ++i) enc.add(commands[i], i);
@@ -78,6 +79,7 @@ TEST(LmcDevice, CorrectionTableIsUploadedLineByLine) {
   board.start_clock();
   LmcOptions o = test::quick_options();
   CorrectionTable t;
+  t.scale = 65536.0 / 110;  // made for the 110 mm lens
   t.entries.resize(kCorEntries);
   for (std::size_t i = 0; i < kCorEntries; ++i)
     t.entries[i] = {encode_cor_delta(std::int64_t(i % 100) - 50), encode_cor_delta(7)};
@@ -96,7 +98,7 @@ TEST(LmcDevice, CorrectionTableIsUploadedLineByLine) {
 }
 
 TEST(LmcDevice, GoldenJobThroughTheDevice) {
-  LoopbackBench bench({}, {}, test::quick_options(), /*time_scale=*/40);
+  LoopbackBench bench(test::golden_board(), {}, test::golden_options(), /*time_scale=*/40);
   LmcDevice& dev = *bench.device;
   dev.begin_job(test::header_with(test::golden_pen()));
   const auto cmds = test::golden_rectangle_commands();
@@ -106,8 +108,8 @@ TEST(LmcDevice, GoldenJobThroughTheDevice) {
   EXPECT_EQ(r.commands_done, 5u);
   EXPECT_EQ(figure(r, "commands"), 5);
   EXPECT_EQ(figure(r, "packets"), 1);
-  EXPECT_EQ(figure(r, "list_commands"), 17);
-  EXPECT_EQ(figure(r, "list_commands_per_packet"), 17);
+  EXPECT_EQ(figure(r, "list_commands"), 18);
+  EXPECT_EQ(figure(r, "list_commands_per_packet"), 18);
 
   const auto packets = bench.board.packets();
   ASSERT_EQ(packets.size(), 1u);
@@ -206,28 +208,35 @@ TEST(LmcDevice, WithheldReadyDelaysThePacketsButLosesNone) {
   EXPECT_TRUE(bench.board.violations().empty());
 }
 
+// READY withheld for good after the fourth packet: the list runs out of what it has, stays
+// BUSY waiting for more, and the host gives up once the list has run twice its estimate and
+// the grace (0.1 s here) without making room.
 TEST(LmcDevice, ReadyThatNeverReturnsIsATimeoutFault) {
   BoardFaults f;
-  f.withhold_ready_after_packet = 1;
+  f.withhold_ready_after_packet = 4;
   f.withhold_ready_s = 30;
   LmcOptions o = test::quick_options();
   o.session.grace_s = 0.1;
   LoopbackBench bench({}, f, o);
-  const auto cmds = zigzag(1000);
+  const auto cmds = zigzag(3000);
   bench.device->begin_job(test::header_with(fast_pen()));
   try {
     bench.device->submit(cmds);
     FAIL() << "no fault";
   } catch (const DeviceFaultError& e) {
     EXPECT_EQ(e.fault().category, FaultCategory::timeout);
-    EXPECT_EQ(e.fault().at, 0u);  // ExecuteList had not gone out: nothing ran
+    EXPECT_EQ(e.fault().at, 4 * 256u - 11u);  // four packets went out: 11 preamble words, then commands
     const std::string m = e.what();
-    EXPECT_NE(m.find("did not become READY for list packet 2"), std::string::npos) << m;
-    EXPECT_NE(m.find("nothing was marked"), std::string::npos) << m;
-    EXPECT_NE(m.find("laser port off (confirmed by the board)"), std::string::npos) << m;
+    EXPECT_NE(m.find("the board did not become READY for the next list packet: it has run its list for"),
+              std::string::npos) << m;
+    EXPECT_NE(m.find("commands 0..1012 were sent and may have been marked; nothing from command 1013 on"),
+              std::string::npos) << m;
+    EXPECT_NE(m.find("; stopped, laser port off confirmed; acknowledged: WritePort(0x0000), StopExecute, "
+                     "Fiber_SetMo(0), ResetList"),
+              std::string::npos) << m;
   }
   EXPECT_EQ(bench.device->status().state, DeviceState::failed);
-  EXPECT_EQ(bench.board.state().packets_received, 1u);
+  EXPECT_EQ(bench.board.state().packets_received, 4u);
   expect_laser_off(bench.board, "after the READY timeout");
   const DeviceReport r = bench.device->end_job();
   EXPECT_EQ(r.outcome, DeviceState::failed);
@@ -248,14 +257,14 @@ TEST(LmcDevice, StallMidJobStopsTheJobAndTheLaserGoesOff) {
     fault = e.fault();
   }
   EXPECT_EQ(fault.category, FaultCategory::transport);
-  // Five packets reached the board: 10 header words, then commands 0..1269 (a jump and marks).
-  EXPECT_EQ(fault.at, 5 * 256u - 10u);
+  // Five packets reached the board: 11 preamble words, then commands 0..1268 (a jump and marks).
+  EXPECT_EQ(fault.at, 5 * 256u - 11u);
   EXPECT_NE(fault.message.find("endpoint stalled"), std::string::npos) << fault.message;
-  EXPECT_NE(fault.message.find("commands 0..1269 were sent and may have been marked; nothing "
-                               "from command 1270 on was marked"),
+  EXPECT_NE(fault.message.find("commands 0..1268 were sent and may have been marked; nothing "
+                               "from command 1269 on was marked"),
             std::string::npos)
       << fault.message;
-  EXPECT_NE(fault.message.find("laser port off (confirmed"), std::string::npos) << fault.message;
+  EXPECT_NE(fault.message.find("; stopped, laser port off confirmed"), std::string::npos) << fault.message;
   expect_laser_off(bench.board, "after the stall");
   const BoardState s = bench.board.state();
   EXPECT_LE(s.executor.moves, fault.at);  // it executed no more than was sent
@@ -282,12 +291,14 @@ TEST(LmcDevice, BoardThatStopsAnsweringIsATimeoutAndUnreachable) {
     EXPECT_EQ(e.fault().category, FaultCategory::timeout);
     const std::string m = e.what();
     EXPECT_NE(m.find("timed out"), std::string::npos) << m;
-    EXPECT_NE(m.find("could not be reached to switch the laser off"), std::string::npos) << m;
+    EXPECT_NE(m.find("NOT confirmed stopped"), std::string::npos) << m;
+    EXPECT_NE(m.find("laser port off NOT confirmed"), std::string::npos) << m;
+    EXPECT_NE(m.find("the board could not be reached"), std::string::npos) << m;
   }
   const DeviceReport r = bench.device->end_job();
   EXPECT_EQ(r.outcome, DeviceState::failed);
-  // One link timeout for the packet and one for the first stop step: about 0.2 s.
-  EXPECT_LT(figure(r, "fault_latency_s"), 0.2 + 0.1);
+  // One link timeout for the packet: the fault is known then (the stop sequence comes after).
+  EXPECT_LT(figure(r, "fault_latency_s"), 0.1 + 0.1);
 }
 
 TEST(LmcDevice, UnplugMidJobIsReportedWithin200ms) {
@@ -559,7 +570,7 @@ TEST(LmcDevice, CaptureHoldsExactlyTheBytesForEndpoint2) {
   const std::string path =
       (std::filesystem::temp_directory_path() / ("lmc_capture_" + std::to_string(::getpid()) + ".lmc")).string();
   {
-    LmcDevice dev(std::make_unique<CaptureLink>(path), test::quick_options());
+    LmcDevice dev(std::make_unique<CaptureLink>(path), test::golden_options());
     dev.begin_job(test::header_with(test::golden_pen()));
     dev.submit(test::golden_rectangle_commands());
     const DeviceReport r = dev.end_job();

@@ -14,8 +14,10 @@
 
 namespace mark::lmc::test {
 
-// meerk40t test/test_drivers_galvo.py `lmc_rect`, word for word.
-inline std::vector<Word> golden_rectangle_words() {
+// meerk40t test/test_drivers_galvo.py `lmc_rect` (meerk40t@5f68a45b), word for word: "rect 2cm
+// 2cm 1cm 1cm engrave -s 15" on meerk40t's default galvo device (110 mm lens, swap_xy + flip_y
+// on its y-down scene: EzCad's axes).
+inline std::vector<Word> meerk40t_rectangle_words() {
   return {
       word(Op::ReadyMark),
       word(Op::DelayTime, 0x0320),
@@ -36,6 +38,18 @@ inline std::vector<Word> golden_rectangle_words() {
       word(Op::EndOfList),
   };
 }
+
+// What this driver sends for it: the same words and one more, JumpDelay(0) before the jump.
+// Every list sets every delay; meerk40t sends no JumpDelay for a jump delay of 0 and takes the
+// board's, whatever an earlier program left there.
+inline std::vector<Word> golden_rectangle_words() {
+  std::vector<Word> w = meerk40t_rectangle_words();
+  w.insert(w.begin() + 10, word(Op::JumpDelay, 0, 0));
+  return w;
+}
+
+// meerk40t's units for it: EzCad's axes, PolygonDelay in 10 µs (meerk40t since 2025).
+inline FieldUnits golden_units() { return FieldUnits(110, kEzCadAxes, PolygonDelayUnit::ten_us); }
 
 // The init sequence of galvo.md §1.8 as the driver sends it (with WritePort(0) after Reset and
 // no correction table).
@@ -65,11 +79,13 @@ inline DevicePen golden_pen() {
   return p;
 }
 
-// The rectangle itself, in the field frame: 10 mm square from (35, -35) to (25, -25).
+// The rectangle itself in the field frame (x right, y up, origin at the centre): meerk40t's
+// scene rectangle (20, 20)–(30, 30) mm on its 110 mm lens, whose y points down from the top
+// left: x = sx − 55, y = 55 − sy.
 inline std::vector<DeviceCommand> golden_rectangle_commands() {
-  return {DeviceCommand::jump_to(35, -35), DeviceCommand::mark_to(35, -25),
-          DeviceCommand::mark_to(25, -25), DeviceCommand::mark_to(25, -35),
-          DeviceCommand::mark_to(35, -35)};
+  return {DeviceCommand::jump_to(-35, 35), DeviceCommand::mark_to(-25, 35),
+          DeviceCommand::mark_to(-25, 25), DeviceCommand::mark_to(-35, 25),
+          DeviceCommand::mark_to(-35, 35)};
 }
 
 inline std::vector<std::uint8_t> packet_bytes(const std::vector<Word>& words) {
@@ -81,6 +97,20 @@ inline std::vector<std::uint8_t> packet_bytes(const std::vector<Word>& words) {
 inline LmcOptions quick_options() {
   LmcOptions o;
   o.init.settle_s = 0;  // the 50 ms settle sleep only slows the tests down
+  return o;
+}
+
+// The same with meerk40t's polygon-delay unit, for the golden words.
+inline LmcOptions golden_options() {
+  LmcOptions o = quick_options();
+  o.polygon_delay_unit = PolygonDelayUnit::ten_us;
+  return o;
+}
+
+// An emulated board that reads PolygonDelay as the golden words mean it.
+inline BoardOptions golden_board() {
+  BoardOptions o;
+  o.polygon_delay_unit = PolygonDelayUnit::ten_us;
   return o;
 }
 

@@ -1,7 +1,8 @@
-// The material model and the camera: a single line marks as wide as the Gaussian-beam formula
-// says at every speed (the reference width at the reference speed, nothing above the vanishing
-// speed); pixel factors keep the marked share; the camera looks from above (top row = highest
-// y) with bare and marked grey swapped for a dark part; the PNG carries its pixel size in pHYs.
+// The material model: a single line marks as wide as the Gaussian-beam formula says at every
+// speed (the reference width at the reference speed, nothing above the vanishing speed); pixel
+// factors keep the marked share; a mark is half dark at the threshold; the grain has its rms;
+// the view looks from above (top row = highest y) with the tones swapped for a dark part; the
+// PNG carries its pixel size in pHYs.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -51,17 +52,56 @@ TEST(PartImage, CoarsePixelsKeepTheMarkedShare) {
   EXPECT_NEAR(marked_width(d, r, 4), marked_width(d, r, 1), 1e-9);
 }
 
-TEST(PartImage, CameraLooksFromAboveAndSwapsGreyForADarkPart) {
+TEST(PartImage, ViewLooksFromAboveAndSwapsToneForADarkPart) {
   DoseRaster dose(0.005);
   dose.deposit_segment({-1, 0.15}, {1, 0.15}, 0.002);  // a line near the top of the window
-  const PartImage img = PartImage::render(dose, {-0.2, -0.2, 0.2, 0.2}, MarkResponse{});
-  const CameraImage light = camera_view(img, 1);
-  const CameraImage dark = camera_view(img, 1, true);
-  const int row = static_cast<int>(std::lround((img.y0_mm() + (img.height() - 1) * img.pixel_mm() - 0.15) / img.pixel_mm()));
-  EXPECT_EQ(light.at(10, row), kMarkedGrey);
-  EXPECT_EQ(light.at(10, light.height - 1), kBareGrey);
-  EXPECT_EQ(dark.at(10, row), kBareGrey);
-  EXPECT_EQ(dark.at(10, light.height - 1), kMarkedGrey);
+  PartLook look;
+  look.grain_pct = 0;
+  const PartImage light_part = PartImage::render(dose, {-0.2, -0.2, 0.2, 0.2}, MarkResponse{}, 1, look);
+  const PartImage dark_part = PartImage::render(dose, {-0.2, -0.2, 0.2, 0.2}, MarkResponse{}, 1, dark_part_look(look));
+  const GreyImage light = part_view(light_part, look), dark = part_view(dark_part, dark_part_look(look));
+  const int row = static_cast<int>(std::lround(light.row_of(0.15)));
+  // The line's middle is far above the threshold: fully dark on a light part, fully light on a
+  // dark one; the bare part the other way round.
+  const auto grey = [](double reflectance, const PartLook& l) {
+    return std::lround(255 * reflectance / std::max(l.bare_reflectance, l.mark_reflectance));
+  };
+  EXPECT_EQ(light.at(10, row), grey(look.mark_reflectance, look));
+  EXPECT_EQ(light.at(10, light.height - 1), grey(look.bare_reflectance, look));
+  EXPECT_EQ(dark.at(10, row), 255);
+  EXPECT_EQ(dark.at(10, light.height - 1), grey(look.mark_reflectance, look));
+}
+
+TEST(PartImage, AMarkIsHalfDarkWhereItsFluenceIsAtTheThreshold) {
+  // A single line at the reference speed: its edge, half the reference width out, is at the
+  // threshold, half dark; a tone ratio further in it is fully dark.
+  const MarkResponse r;
+  PartLook look;
+  look.grain_pct = 0;
+  const PartImage img = PartImage::render(line_dose(1000), {-0.2, -0.2, 0.2, 0.2}, r, 1, look);
+  const int i = static_cast<int>(std::lround((0 - img.x0_mm()) / img.pixel_mm()));
+  const int edge = static_cast<int>(std::lround((r.reference_width_mm / 2 - img.y0_mm()) / img.pixel_mm()));
+  const double half = (look.bare_reflectance + look.mark_reflectance) / 2;
+  // One raster pixel (5 µm) either side of the edge brackets the half-dark reflectance.
+  EXPECT_LT(img.reflectance(i, edge - 1), half);
+  EXPECT_GT(img.reflectance(i, edge + 1), half);
+  EXPECT_NEAR(img.reflectance(i, static_cast<int>(std::lround(-img.y0_mm() / img.pixel_mm()))), look.mark_reflectance, 1e-6);
+}
+
+TEST(PartImage, GrainHasTheStatedRmsAndBelongsToThePart) {
+  DoseRaster dose(0.005);
+  PartLook look;  // 4 % grain
+  const PartImage a = PartImage::render(dose, {-0.5, -0.5, 0.5, 0.5}, MarkResponse{}, 1, look);
+  double sum = 0, sum2 = 0;
+  for (int j = 0; j < a.height(); ++j)
+    for (int i = 0; i < a.width(); ++i) sum += a.reflectance(i, j), sum2 += a.reflectance(i, j) * a.reflectance(i, j);
+  const double n = a.width() * a.height(), mean = sum / n, rms = std::sqrt(sum2 / n - mean * mean);
+  EXPECT_NEAR(mean, look.bare_reflectance, 0.002);
+  EXPECT_NEAR(rms / mean, look.grain_pct / 100, 0.004);
+  // Another window over the same spot of the part shows the same grain there.
+  const PartImage b = PartImage::render(dose, {-0.3, -0.3, 0.7, 0.7}, MarkResponse{}, 1, look);
+  EXPECT_FLOAT_EQ(a.reflectance(a.width() - 1, a.height() - 1),
+                  b.reflectance(a.width() - 1 - 40, a.height() - 1 - 40));
 }
 
 TEST(DoseRaster, CopyRectMatchesPixelByPixel) {
@@ -75,7 +115,7 @@ TEST(DoseRaster, CopyRectMatchesPixelByPixel) {
 }
 
 TEST(GreyPng, CarriesThePixelSize) {
-  CameraImage img;
+  GreyImage img;
   img.width = 40;
   img.height = 30;
   img.pixel_mm = 0.005;

@@ -30,6 +30,8 @@
 #include "marker/codes/code_marks.hpp"
 #include "marker/codes/code_spec.hpp"
 #include "marker/codes/verify.hpp"
+#include "marker/job/code_photo.hpp"
+#include "marker/cnc/vcarve.hpp"
 #include "marker/fill/fill_options.hpp"
 #include "marker/gravure/cell_setup.hpp"
 #include "marker/gravure/gravure_job.hpp"
@@ -57,7 +59,8 @@ const std::set<std::string> kNotSettings = {
     "--force",                                              // ... over an existing one
     "--job", "--store", "--mask", "--tool-image",           // files and stores read
     "--inject",                                             // faults injected into a run (tests, drills)
-    "--compare", "--no-serial",                             // what a report includes
+    "--compare", "--no-serial", "--quiet",                  // what a report includes
+    "--cleanup-output", "--camera-png",                     // more files written
     "--markdown",                                           // how `marker options` prints
 };
 
@@ -161,7 +164,7 @@ std::map<std::string, SettingRef> declared_keys() {
 // keys with no command-line option.
 const std::set<std::string> kStructure = {
     "format", "name", "shifts[].code", "shifts[].start", "variables.NAME", "counters", "pens", "objects",
-    "head.model", "objects[].kind", "objects[].symbology", "objects[].fill", "objects[].hatch",
+    "head.model", "data", "data.file", "data.delimiter", "objects[].kind", "objects[].symbology", "objects[].fill", "objects[].hatch",
     "objects[].fill.sets", "objects[].hatch.sets", "pens.NAME", "counters.NAME",
 };
 // Declared for a place that does not read it: a code's hatch fills square modules, where the fill
@@ -394,17 +397,19 @@ TEST(Settings, TheLibrarysDefaultsAreTheTables) {
   EXPECT_EQ(format_number(kDefaultModule_mm), kModule.derived);
   EXPECT_EQ(code.dot_share, kDotSize.fallback());
   EXPECT_EQ(CodeSpec{}.qr_ecc, kQrEcc.value.front());
-  const VerifyOptions verify;
+  const CodeCheckOptions verify;
   EXPECT_EQ(verify.response.spot_diameter_mm, kBeamDiameter.fallback());
   EXPECT_EQ(verify.response.reference_width_mm, kLineWidth.fallback());
   EXPECT_EQ(verify.response.reference_speed_mm_s, kLineSpeed.fallback());
-  EXPECT_EQ(verify.pixels_per_module, kPixelsPerModule.fallback());
-  EXPECT_EQ(verify.aperture_modules, kAperture.fallback());
+  EXPECT_EQ(verify.reading.aperture_modules, kAperture.fallback());
   const GantryConfig gantry;
   EXPECT_EQ(gantry.x.steps_per_mm, kStepsPerMm.fallback());
   EXPECT_EQ(gantry.x.max_speed_mm_s, kGantrySpeed.fallback());
   EXPECT_EQ(gantry.x.accel_mm_s2, kGantryAccel.fallback());
   EXPECT_EQ(gantry.strike_s * 1000, kStrike.fallback());
+  const VCarveSettings vcarve;
+  EXPECT_EQ(vcarve.bit_angle_deg, kBitAngle.fallback());
+  EXPECT_EQ(vcarve.tolerance_mm, kCarveTolerance.fallback());
   const CutSettings cut;
   EXPECT_EQ(cut.tool_diameter_mm, kToolDiameter.fallback());
   EXPECT_EQ(cut.depth_mm, kDepth.fallback());

@@ -14,8 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "cnc_checks.hpp"
 #include "../cli_runner.hpp"
+#include "cnc_checks.hpp"
+#include "cnc_files.hpp"
 #include "marker/cli/layout_options.hpp"
 #include "marker/cnc/protrusion.hpp"
 #include "tool_render.hpp"
@@ -25,19 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string out_path(const std::string& name) {
-  const fs::path dir = fs::path(MARKER_BINARY_DIR) / "cnc_cli";
-  fs::create_directories(dir);
-  fs::remove(dir / name);
-  return (dir / name).string();
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string out_path(const std::string& name) { return cnc_out_path("cnc_cli", name); }
 
 // The number printed right after `label`, or NaN.
 double number_after(const std::string& text, const std::string& label) {
@@ -87,6 +76,7 @@ std::vector<Fitting> fittings() {
 const char* kText = "R2-D9 ok";
 
 TEST(GcodeCli, DepressionProgramsPassRs274AndFollowTheStrokes) {
+  REQUIRE_RS274();
   for (const Fitting& fit : fittings())
     for (const char* dialect : {"linuxcnc", "fanuc", "plain"}) {
       SCOPED_TRACE(fit.name + " " + dialect);
@@ -108,6 +98,7 @@ TEST(GcodeCli, DepressionProgramsPassRs274AndFollowTheStrokes) {
 }
 
 TEST(GcodeCli, InchProgram) {
+  REQUIRE_RS274();
   const std::string file = out_path("dep_inch.ngc");
   const CliResult r = run_cli({"gcode", kText, "--height", "5", "--x", "-15", "--italic", "10", "--depth", "0.254",
                                "--units", "inch", "--dialect", "fanuc", "-o", file});
@@ -125,6 +116,7 @@ TEST(GcodeCli, InchProgram) {
 }
 
 TEST(GcodeCli, ProtrusionProgramsPassRs274WithoutGouging) {
+  REQUIRE_RS274();
   const std::vector<Fitting> all = fittings();
   const char* dialects[] = {"linuxcnc", "fanuc", "plain"};
   for (std::size_t k = 0; k < all.size(); ++k) {
@@ -156,6 +148,7 @@ TEST(GcodeCli, ProtrusionProgramsPassRs274WithoutGouging) {
 // A worn tool measured from its shadow: the pocket is offset by the measured radius, so the
 // tool centre keeps exactly that distance from the letters, which keep their designed width.
 TEST(GcodeCli, ToolImageReplacesTheNominalRadius) {
+  REQUIRE_RS274();
   Render rr;
   rr.size = 240;
   rr.blur_px = 1.0;
@@ -195,7 +188,7 @@ TEST(GcodeCli, ToolMeasureReportsDiameterAndWear) {
   EXPECT_NEAR(number_after(r.out, "mm: radius "), -0.04, 0.001) << r.out;
   const CliResult bad = run_cli({"tool-measure", "/nonexistent.png", "--pixel-size", "5"});
   EXPECT_EQ(bad.code, 1);
-  EXPECT_NE(bad.err.find("marker: /nonexistent.png: cannot open"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("marker: '/nonexistent.png': cannot open the image"), std::string::npos) << bad.err;
 }
 
 // The tool measurement as JSON, the same figures as the text, and the text says from which axis
@@ -227,11 +220,12 @@ TEST(GcodeCli, ToolMeasureJsonAndTheAnglesAxis) {
 // A 40-line text: the title carries every line, each in its own comment, and LinuxCNC runs it
 // (it refused the one-line title with "Command too long").
 TEST(GcodeCli, FortyLineTextRunsInEveryDialect) {
+  REQUIRE_RS274();
   std::string text;
   for (int k = 0; k < 40; ++k) text += (k ? "\\n" : "") + std::string("L") + std::to_string(k) + " ABCDEFGHIJKLMNOPQRSTUVWXYZ";
   for (const char* dialect : {"linuxcnc", "fanuc", "plain"}) {
     const std::string file = out_path(std::string("forty_") + dialect + ".ngc");
-    const CliResult r = run_cli({"gcode", text, "--height", "1", "--x", "-50", "--y", "50", "--field", "200",
+    const CliResult r = run_cli({"gcode", text, "--height", "1", "--x", "-50", "--y", "50",
                                  "--dialect", dialect, "-o", file, "--json"});
     ASSERT_EQ(r.code, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);

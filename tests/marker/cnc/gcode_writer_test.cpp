@@ -91,6 +91,7 @@ TEST(GcodeWriter, ArcCentresFromRoundedEndPoints) {
 }
 
 TEST(GcodeWriter, DialectStructure) {
+  REQUIRE_RS274();
   GcodeOptions o;
   o.header = {"G64 P0.01"};
   o.footer = {"(done)"};
@@ -141,6 +142,7 @@ TEST(GcodeWriter, RefusesLinesThatWouldEndTheProgram) {
 // The LinuxCNC limit is measured, not assumed: rs274 reads a 252-character line and refuses one of
 // 253 with "Command too long".
 TEST(GcodeWriter, LinuxcncLineLimitIsWhatRs274Accepts) {
+  REQUIRE_RS274();
   const std::size_t limit = dialect_limits(Dialect::linuxcnc).line_chars;
   auto program = [](std::size_t chars) {
     return "(" + std::string(chars - 2, 'A') + ")\nG21 G90 G0 X1. Y2.\nM2\n";
@@ -155,6 +157,7 @@ TEST(GcodeWriter, LinuxcncLineLimitIsWhatRs274Accepts) {
 // A long title wraps into comment lines within every dialect's limit, keeps every character,
 // one comment per line of the title, and the programs still run.
 TEST(GcodeWriter, LongTitlesWrapWithinEachDialectsLines) {
+  REQUIRE_RS274();
   std::string title;
   for (int k = 0; k < 40; ++k) {
     if (k) title += '\n';

@@ -23,6 +23,7 @@ using ClipperLib::Paths;
 class ProtrusionRs274 : public ::testing::TestWithParam<Case> {};
 
 TEST_P(ProtrusionRs274, KeepsTheLettersAndClearsThePlate) {
+  REQUIRE_RS274();
   const auto [dialect, fit, variant] = GetParam();
   FigureSpec spec;
   spec.text = "DOTS";
@@ -56,6 +57,7 @@ TEST_P(ProtrusionRs274, KeepsTheLettersAndClearsThePlate) {
 INSTANTIATE_TEST_SUITE_P(AllDialectsFitsVariants, ProtrusionRs274, all_cases(), case_name);
 
 TEST(Protrusion, ReportsGapsNarrowerThanTheToolInsteadOfGouging) {
+  REQUIRE_RS274();
   FigureSpec spec;
   spec.text = "LL";
   spec.gap_mm = 0.2;  // the L's foot ends 0.2 + 0.4 mm before the next L: narrower than the tool
@@ -93,6 +95,7 @@ TEST(Protrusion, RejectsAStepOverLargerThanTheToolRadius) {
 // --cutter-comp: the walls go out as part contours under G41 and the control offsets them. The
 // interpreter's output is the compensated tool centre, so the same checks apply unchanged.
 TEST(Protrusion, CutterCompensationByTheControl) {
+  REQUIRE_RS274();
   FigureSpec spec;
   spec.text = "DOL";
   spec.gap_mm = 2.5;

@@ -79,6 +79,16 @@ std::vector<CanonMove> parse(const std::string& text) {
   return moves;
 }
 
+// Where rs274 may be: $RS274, then the build's and the source tree's build/rs274/.
+std::vector<fs::path> rs274_candidates() {
+  std::vector<fs::path> candidates;
+  if (const char* env = std::getenv("RS274")) candidates.emplace_back(env);
+  candidates.emplace_back(fs::path(MARKER_BINARY_DIR) / "rs274" / "rs274");
+  const fs::path in_source = fs::path(MARKER_SOURCE_DIR) / "build" / "rs274" / "rs274";
+  if (in_source.lexically_normal() != candidates.back().lexically_normal()) candidates.push_back(in_source);
+  return candidates;
+}
+
 }  // namespace
 
 Element CanonMove::path() const {
@@ -97,23 +107,28 @@ Element CanonMove::path() const {
 }
 
 std::string rs274_path() {
-  std::vector<fs::path> candidates;
-  if (const char* env = std::getenv("RS274")) candidates.emplace_back(env);
-  candidates.emplace_back(fs::path(MARKER_BINARY_DIR) / "rs274" / "rs274");
-  candidates.emplace_back(fs::path(MARKER_SOURCE_DIR) / "build" / "rs274" / "rs274");
-  for (const fs::path& p : candidates)
+  for (const fs::path& p : rs274_candidates())
     if (fs::exists(p)) return p.string();
-  ADD_FAILURE() << "LinuxCNC rs274 not found (looked in $RS274, " << candidates[candidates.size() - 2]
-                << ", " << candidates.back()
-                << "). The G-code validation cannot run: run scripts/fetch_rs274.sh (scripts/setup.sh "
-                   "does) with access to the Debian mirror.";
   return {};
+}
+
+std::string rs274_missing() {
+  if (!rs274_path().empty()) return {};
+  const std::vector<fs::path> c = rs274_candidates();
+  std::string where = "$RS274";
+  for (std::size_t i = std::getenv("RS274") ? 1 : 0; i < c.size(); ++i) where += ", " + c[i].string();
+  return "LinuxCNC rs274 not found (looked in " + where +
+         "): the G-code is not validated; run scripts/fetch_rs274.sh (scripts/setup.sh does) with access to the "
+         "Debian mirror";
 }
 
 Rs274Run run_rs274(const std::string& program, const std::string& name, const std::string& tool_table) {
   Rs274Run run;
   const std::string exe = rs274_path();
-  if (exe.empty()) return run;
+  if (exe.empty()) {
+    ADD_FAILURE() << rs274_missing();
+    return run;
+  }
   const fs::path dir = fs::path(MARKER_BINARY_DIR) / "cnc_programs";
   fs::create_directories(dir);
   const fs::path file = dir / (name + ".ngc");

@@ -30,7 +30,22 @@ TEST(CodeCli, JsonReportsTheDecodedDataAndTheFigures) {
   EXPECT_EQ(j["rows"], 22);
   EXPECT_NEAR(j["module_um"].get<double>(), 5000.0 / 22, 1e-9);
   EXPECT_NEAR(j["module_x_um"].get<double>(), 5000.0 / 22, 10);
-  EXPECT_EQ(j["axial_nonuniformity_grade"], "A");
+  // Both Data Matrix readers read it; ZBar does not read Data Matrix.
+  EXPECT_EQ(j["decided_by"], "any two");
+  ASSERT_EQ(j["readers"].size(), 3u);
+  EXPECT_EQ(j["readers"][0]["reader"], "zxing");
+  EXPECT_EQ(j["readers"][0]["data_match"], true);
+  EXPECT_EQ(j["readers"][1]["reader"], "libdmtx");
+  EXPECT_EQ(j["readers"][1]["data_match"], true);
+  EXPECT_EQ(j["readers"][2]["supported"], false);
+  // A clean mark grades A on every TR 29158 parameter; the grid fitted matches the module.
+  ASSERT_TRUE(j["iso"].is_object());
+  EXPECT_EQ(j["iso"]["standard"], "ISO/IEC TR 29158");
+  for (const char* k : {"overall", "decode", "cell_contrast", "cell_modulation", "fixed_pattern_damage",
+                        "axial_nonuniformity", "grid_nonuniformity", "unused_error_correction"})
+    EXPECT_EQ(j["iso"][k], "A") << k;
+  EXPECT_NEAR(j["iso"]["module_x_px"].get<double>() * j["camera_px_um"].get<double>(), 5000.0 / 22, 10);
+  EXPECT_EQ(j["iso"]["codewords_wrong"], 0);
   for (const char* k : {"fill_ratio", "fill_ratio_min", "spill_ratio", "modules_wrong", "camera_px_um", "mark_time_s",
                         "hatch_lines", "speed_mm_s", "width_mm", "quiet_zone_modules"})
     EXPECT_TRUE(j.contains(k)) << k;
@@ -47,10 +62,23 @@ TEST(CodeCli, JsonReportsTheDecodedDataAndTheFigures) {
 TEST(CodeCli, TextSummaryAndExitTwoWhenTheMarkDoesNotRead) {
   const test::CliResult ok = test::run_cli({"code", "qr", "SN 0042"});
   ASSERT_EQ(ok.code, 0) << ok.err;
-  EXPECT_NE(ok.out.find("read by zbar: decoded, data matches: 'SN 0042'"), std::string::npos) << ok.out;
-  const test::CliResult fast = test::run_cli({"code", "datamatrix", "SN 0042", "--speed", "8000", "--head", "SL10"});
+  EXPECT_NE(ok.out.find("zxing reads; libdmtx n/a; zbar reads; PASS, 'SN 0042'"), std::string::npos) << ok.out;
+  EXPECT_NE(ok.out.find("ISO/IEC TR 29158 grade A"), std::string::npos) << ok.out;
+  // Far above the material's vanishing speed (7.4 m/s) the lines leave no mark a reader finds:
+  // the code fails and grades F.
+  const test::CliResult fast = test::run_cli({"code", "datamatrix", "SN 0042", "--speed", "12000", "--head", "SL10"});
   EXPECT_EQ(fast.code, 2) << fast.out << fast.err;
-  EXPECT_NE(fast.out.find("NOT decoded"), std::string::npos) << fast.out;
+  EXPECT_NE(fast.out.find("; FAIL"), std::string::npos) << fast.out;
+  EXPECT_NE(fast.out.find("grade F"), std::string::npos) << fast.out;
+  // A mark of less contrast (reflectance 0.40 against 0.55: cell contrast 1 − 0.40/0.55 = 27 %,
+  // grade B) reads but falls short of a required A: exit 2, the reason on stderr.
+  const test::CliResult faint =
+      test::run_cli({"code", "qr", "SN 0042", "--camera", "mark_reflectance=0.40", "--require-grade", "A"});
+  EXPECT_EQ(faint.code, 2) << faint.out << faint.err;
+  EXPECT_NE(faint.out.find("PASS"), std::string::npos) << faint.out;
+  EXPECT_NE(faint.err.find("cell contrast"), std::string::npos) << faint.err;
+  EXPECT_NE(faint.out.find("cell contrast B (27 %)"), std::string::npos) << faint.out;
+  EXPECT_EQ(test::run_cli({"code", "qr", "SN 0042", "--camera", "mark_reflectance=0.40", "--require-grade", "B"}).code, 0);
 }
 
 TEST(CodeCli, OptionsOutsideTheirRangesAreOneLineErrors) {
@@ -65,8 +93,12 @@ TEST(CodeCli, OptionsOutsideTheirRangesAreOneLineErrors) {
            {{"--hatch-spacing", "-1"}, "--hatch-spacing: -1 is outside the range 0.001 to 10 mm"},
            {{"--speed", "0"}, "--speed: 0 is outside the range "},
            {{"--beam-diameter", "9"}, "--beam-diameter: 9 is outside the range 0.001 to 5 mm"},
-           {{"--pixels-per-module", "1"}, "--pixels-per-module: 1 is outside the range 3 to 20"},
-           {{"--style", "star"}, "module style 'star' is not one of square, dot, line"},
+           {{"--camera", "f_number=0.1"}, "--camera f_number: 0.1 is outside the range 0.7 to 64"},
+           {{"--camera", "zoom=2"}, "--camera: unknown key 'zoom' (keys: pixel_um, "},
+           {{"--camera", "seed=1.5"}, "--camera seed: '1.5' is not a whole number"},
+           {{"--reader", "zbar"}, "--reader zbar does not read datamatrix"},
+           {{"--require-grade", "E"}, "--require-grade: 'E' is not one of A, B, C, D"},
+           {{"--style", "star"}, "--style: 'star' is not one of square, dot, line"},
            {{"--matrix-size", "11x11"}, "Data Matrix size 11x11 is not an ECC 200 size"},
            {{"--x", "60"}, "code 1 with its quiet zone leaves the field"},
            {{"--head", "XY"}, "--head 'XY' is not one of SL10, SL14, cheap"}}) {
@@ -100,9 +132,9 @@ TEST(FillCli, SingleLineFontAndBadOptionsAreRefused) {
   EXPECT_NE(stroke.err.find("only closed outlines can be filled"), std::string::npos) << stroke.err;
   const test::CliResult rule = test::run_cli({"preview", "A", "--font", "DejaVuSans", "--fill", "hatch", "--fill-rule", "odd",
                                               "-o", svg.string()});
-  EXPECT_EQ(rule.err, "marker: fill rule 'odd' is not one of nonzero, evenodd\n");
+  EXPECT_EQ(rule.err, "marker: --fill-rule: 'odd' is not one of nonzero, evenodd\n");
   const test::CliResult mode = test::run_cli({"preview", "A", "--font", "DejaVuSans", "--fill", "cross", "-o", svg.string()});
-  EXPECT_EQ(mode.err, "marker: --fill 'cross' is not one of none, hatch\n");
+  EXPECT_EQ(mode.err, "marker: --fill: 'cross' is not one of none, hatch\n");
   EXPECT_FALSE(fs::exists(svg));
 }
 
@@ -157,6 +189,30 @@ TEST(MarkCodeCli, ACodeAloneAndTheRefusals) {
   EXPECT_EQ(unreadable.code, 1);
   EXPECT_NE(unreadable.err.find("does not read back off the simulated mark; nothing was fired"), std::string::npos)
       << unreadable.err;
+}
+
+TEST(MarkCodeCli, RequireGradeRefusesACodeBelowItBeforeFiring) {
+  // The same clean QR graded off the predicted mark: with a mark of reflectance 0.40 on a 0.55
+  // part its cell contrast is 1 − 0.40/0.55 = 27 %, grade B, so A is refused and B is met.
+  const std::vector<std::string> base = {"mark", "", "--code", "qr:SN 0042", "--camera", "mark_reflectance=0.40",
+                                         "--virtual-time", "--json"};
+  std::vector<std::string> strict = base, met = base;
+  strict.insert(strict.end(), {"--require-grade", "A"});
+  met.insert(met.end(), {"--require-grade", "B"});
+  const test::CliResult refused = test::run_cli(strict);
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_EQ(refused.err,
+            "marker: --require-grade A: code 1 (qr 21x21): grade B (cell contrast B); nothing was fired\n");
+  EXPECT_TRUE(refused.out.empty()) << "nothing ran";
+  const test::CliResult done = test::run_cli(met);
+  ASSERT_EQ(done.code, 0) << done.err;
+  const auto j = nlohmann::json::parse(done.out);
+  EXPECT_EQ(j["outcome"], "done");
+  EXPECT_EQ(j["codes"][0]["iso"]["overall"], "B");
+  EXPECT_EQ(j["codes"][0]["iso"]["cell_contrast"], "B");
+  EXPECT_NEAR(j["codes"][0]["iso"]["cell_contrast_fraction"].get<double>(), 1 - 0.40 / 0.55, 0.03);
+  const test::CliResult no_code = test::run_cli({"mark", "X", "--require-grade", "B", "--virtual-time"});
+  EXPECT_EQ(no_code.err, "marker: --require-grade B: the job marks no code (give --code)\n");
 }
 
 }  // namespace

@@ -35,7 +35,9 @@ TEST(Flatten, CircleChordsStayWithinTheTolerance) {
       const std::size_t n = chord_count(arc, tol);
       EXPECT_LE(worst_chord_gap(arc, n), tol * (1 + 1e-6)) << "r " << r << " tol " << tol;
       // And not needlessly many: one chord fewer would leave the tolerance (when it can).
-      if (n > 2) EXPECT_GT(worst_chord_gap(arc, n - 1), tol * 0.9) << "r " << r << " tol " << tol;
+      if (n > 2) {
+        EXPECT_GT(worst_chord_gap(arc, n - 1), tol * 0.9) << "r " << r << " tol " << tol;
+      }
     }
 }
 

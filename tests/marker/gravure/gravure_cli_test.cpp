@@ -2,6 +2,7 @@
 // name the option, the value and the range — with nothing written when the command fails.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -101,7 +102,7 @@ TEST(GravureCli, BadOptionsAreOneLineErrors) {
       {{"--notch", "90000:0.05:12"}, "marker: --notch frequency: 90000 is outside the range 1 to 50000 Hz\n"},
       {{"--notch", "1800:0.05:80"}, "marker: --notch depth: 80 is outside the range 0 to 60 dB\n"},
       {{"--emphasis", "5500:0.5:x:0.7"}, "marker: --emphasis '5500:0.5:x:0.7': 'x' is not a number; expected FREQ_HZ:DAMPING:CORNER_HZ:CORNER_DAMPING, e.g. 5500:0.5:20000:0.707\n"},
-      {{"--tune", "maybe"}, "marker: --tune 'maybe': expected auto, nominal or off\n"},
+      {{"--tune", "maybe"}, "marker: --tune: 'maybe' is not one of auto, nominal, off\n"},
       {{"--target", "5000"}, "marker: --target: 5000 is outside the range 11000 to 45000 Hz\n"},
       {{"--sense-noise", "11"}, "marker: --sense-noise: 11 is outside the range 0 to 10 µm\n"},
   };
@@ -118,13 +119,31 @@ TEST(GravureCli, NothingIsWrittenWhenTheJobFails) {
   const auto png = fresh_temp_file("marker_gravure_cli", "never.png");
   const CliResult r = run_cli({"gravure", "/nonexistent.pgm", "--preview", png.string()});
   EXPECT_EQ(r.code, 1);
-  EXPECT_EQ(r.err, "marker: /nonexistent.pgm: cannot open the image\n");
+  EXPECT_EQ(r.err, "marker: '/nonexistent.pgm': cannot open the image: No such file or directory\n");
   EXPECT_FALSE(std::filesystem::exists(png));
   const CliResult wrong_mask = run_cli({"gravure", files().image, "--mask", files().image + ".nothing"});
   EXPECT_EQ(wrong_mask.code, 1);
   const CliResult bad_preview = run_cli({"gravure", files().image, "--preview", "/nonexistent-dir/p.png"});
   EXPECT_EQ(bad_preview.code, 1);
-  EXPECT_NE(bad_preview.err.find("output file '/nonexistent-dir/p.png'"), std::string::npos) << bad_preview.err;
+  // Refused before the engraving runs, naming the option and the folder.
+  EXPECT_EQ(bad_preview.err,
+            "marker: --preview '/nonexistent-dir/p.png': directory '/nonexistent-dir': No such file or directory\n");
+}
+
+// A job longer than the simulated head records is refused from the image's size, before the
+// toolpath is built (it used to be refused after 52 s and 1.2 GB). 200 px at 0.5 px/mm is 400 mm
+// each way; 70 lines/cm make 2800 tracks of 2800 cells, 32 samples each at 6250 cells/s.
+TEST(GravureCli, AJobTooLongForTheHeadIsRefusedFromItsSize) {
+  const auto image = fresh_temp_file("marker_gravure_cli", "big.pgm");
+  save_pgm(wedge_and_lines(200, 200, nullptr), image.string());
+  const auto png = fresh_temp_file("marker_gravure_cli", "big-preview.png");
+  const CliResult r = run_cli({"gravure", image.string(), "--resolution", "0.5", "--preview", png.string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err.rfind("marker: gravure image: 2800 tracks of 2800 cells at 0.5 px/mm make 250880000 stylus "
+                        "samples; the simulated head records at most ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("raise --resolution or use a smaller image\n"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+  EXPECT_FALSE(std::filesystem::exists(png));
 }
 
 }  // namespace

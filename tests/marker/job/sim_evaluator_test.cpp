@@ -16,21 +16,12 @@
 #include "marker/job/head_pen.hpp"
 #include "marker/job/sim_evaluator.hpp"
 #include "tests/driver/lmc/lmc_test_support.hpp"
+#include "tests/marker/job/serial_job.hpp"
 
 namespace mark {
 namespace {
 
-JobSpec serial_job() {
-  JobSpec spec;
-  spec.text = "SN 20260042";
-  spec.font = open_font(kBuiltinFontName);
-  spec.layout.height_mm = 1.5;
-  spec.layout.align = Align::center;
-  spec.layout.base = Point(0, 0.5);
-  spec.head = head_sl10();
-  spec.pen = pen_for_head(spec.head, CornerStrategy::blanking, 300);
-  return spec;
-}
+using mark::test::serial_job;
 
 // The simulated scanner behind an LMC device on the emulated board, on the board's clock at
 // 4 × real time. Arcs go to the board as 1 µm chords: at the default 5 µm the chords' own sagitta

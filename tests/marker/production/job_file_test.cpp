@@ -24,7 +24,7 @@ constexpr const char* kJob = R"({
   },
   "pens": {
     "fine": {"speed_mm_s": 800, "corner": "delays", "power_pct": 40, "frequency_khz": 60,
-             "pulse_width_ns": 200, "passes": 2, "polygon_delay_us": 55},
+             "pulse_width_ns": 200, "source": "mopa", "passes": 2, "polygon_delay_us": 55},
     "deep": {"speed_mm_s": 300, "power_pct": 100, "frequency_khz": 20, "run_out_mm": 0.2}
   },
   "objects": [
@@ -57,7 +57,7 @@ TEST(JobFile, ReadsEveryField) {
   const JobFile job = parse_job(kJob, "job.json");
   EXPECT_EQ(job.job_name, "bracket");
   EXPECT_EQ(job.device, "sim");  // the default
-  for (const char* board : {"lmc", "lmc:1234ABCD", "lmc-capture:bracket.lmc", "sim"})
+  for (const char* board : {"lmc", "lmc:1234ABCD", "lmc-capture:bracket.lmc", "lmc-emulated", "lmc-emulated:slowest", "sim"})
     EXPECT_EQ(parse_job(with("\"field_mm\": 100", std::string("\"field_mm\": 100, \"device\": \"") + board + "\""), "job.json").device, board);
   EXPECT_EQ(job.head.name, "SL14");
   EXPECT_DOUBLE_EQ(job.head.field_mm, 100);
@@ -86,6 +86,8 @@ TEST(JobFile, ReadsEveryField) {
   EXPECT_DOUBLE_EQ(fine.laser.power_pct, 40);
   EXPECT_DOUBLE_EQ(fine.laser.frequency_khz, 60);
   EXPECT_DOUBLE_EQ(fine.laser.pulse_width_ns, 200);
+  EXPECT_EQ(fine.laser.source, LaserSource::mopa);
+  EXPECT_EQ(job.pens.at("deep").laser.source, LaserSource::fiber);  // the default
   EXPECT_EQ(fine.passes, 2);
   EXPECT_DOUBLE_EQ(job.pens.at("deep").motion.run_out_mm, 0.2);
   ASSERT_EQ(job.objects.size(), 2u);
@@ -118,7 +120,7 @@ TEST(JobFile, MalformedFilesGiveOneLineErrors) {
       {with("\"name\": \"bracket\"", "\"nmae\": \"bracket\""), "job.json: nmae: unknown key (did you mean \"name\"?)"},
       {with("\"power_pct\": 40", "\"power_pct\": 140"), "job.json: pens.fine.power_pct: 140 is outside the range 0 to 100 %"},
       {with("\"power_pct\": 40", "\"power_pct\": \"40\""), "job.json: pens.fine.power_pct: expected a number, found a string"},
-      {with("\"frequency_khz\": 60", "\"frequency_khz\": 0"), "job.json: pens.fine.frequency_khz: 0 is outside the range 0.1 to 10000 kHz"},
+      {with("\"frequency_khz\": 60", "\"frequency_khz\": 0"), "job.json: pens.fine.frequency_khz: 0 is outside the range 1 to 4000 kHz"},
       {with("\"passes\": 2", "\"passes\": 1.5"), "job.json: pens.fine.passes: expected a whole number, found a fraction"},
       {with("\"speed_mm_s\": 800", "\"speed_mm_s\": 1e9"), "job.json: pens.fine.speed_mm_s: 1e+09 is outside the range 0.001 to 16000 mm/s (head SL14's positioning limit)"},
       {with("\"corner\": \"delays\"", "\"corner\": \"round\""), "job.json: pens.fine.corner: \"round\" is not one of blanking, delays, none"},
@@ -146,8 +148,12 @@ TEST(JobFile, MalformedFilesGiveOneLineErrors) {
       {with("\"field_mm\": 100", "\"field_mm\": -1"), "job.json: field_mm: -1 is outside the range 1 to 10000 mm"},
       {with("\"variables\": {\"lot\": \"A00\"}", "\"variables\": {\"lot\": 7}"), "job.json: variables.lot: expected a string, found a number"},
       {with("\"counters\": {", "\"counters\": {\"date\": {},"), "job.json: counters.date: \"date\" is a field name of its own; call the counter something else"},
-      {with("\"field_mm\": 100", "\"field_mm\": 100, \"device\": \"usb0\""), "job.json: device: 'usb0' is not a device (sim: the simulated scanner; lmc, lmc:SERIAL, lmc-capture:FILE: a BJJCZ LMC board)"},
-      {with("\"field_mm\": 100", "\"field_mm\": 100, \"device\": \"lmc:xyz\""), "job.json: device: 'lmc:xyz': a board serial is 1 to 8 hex digits (use lmc, lmc:SERIAL with the serial `marker devices` lists, or lmc-capture:FILE)"},
+      {with("\"field_mm\": 100", "\"field_mm\": 100, \"device\": \"usb0\""), "job.json: device: 'usb0' is not a device (sim: the simulated scanner; lmc, lmc:SERIAL, lmc-capture:FILE: a BJJCZ LMC board; lmc-emulated[:VARIANT]: the emulated board)"},
+      {with("\"field_mm\": 100", "\"field_mm\": 100, \"device\": \"lmc:xyz\""), "job.json: device: 'lmc:xyz': a board serial is 1 to 8 hex digits (use lmc, lmc:SERIAL with the serial `marker devices` lists, lmc-capture:FILE, or lmc-emulated[:VARIANT])"},
+      {with("\"field_mm\": 100", "\"field_mm\": 100, \"device\": \"lmc-emulated:fast\""), "job.json: device: 'lmc-emulated:fast': no emulated board variant 'fast' (known: reference, exact_ticks, word_ticks, jump_waits, polygon_10us, shallow_buffer, deep_buffer, foreign_settings, slowest) (use lmc, lmc:SERIAL with the serial `marker devices` lists, lmc-capture:FILE, or lmc-emulated[:VARIANT])"},
+      {with("\"source\": \"mopa\"", "\"source\": \"co2\""), "job.json: pens.fine: pulse width 200 ns: a co2 source (CO2 (continuous wave, PWM power)) has no settable pulse width (only mopa: 2 .. 500 ns; 0 for the source's own)"},
+      {with("\"source\": \"mopa\"", "\"source\": \"laser\""), "job.json: pens.fine.source: \"laser\" is not one of fiber, mopa, co2, uv"},
+      {with("\"frequency_khz\": 20", "\"frequency_khz\": 500"), "job.json: pens.deep: frequency 500 kHz is outside what a fiber source runs (Q-switched fiber: 1 .. 200 kHz)"},
       {with("\"field_mm\": 100", "\"field_mm\": 100, \"device\": 7"), "job.json: device: expected a string, found a number"},
   };
   for (const auto& [text, expected] : cases) EXPECT_EQ(error_of(text), expected);

@@ -32,10 +32,20 @@ inline CounterSpec plain_counter(const std::string& name = "sn", std::int64_t st
   return s;
 }
 
+// One object "serial" = "SN <value>", carrying the serial field (so the marked-text index
+// guards it).
 inline RenderObjects render_sn(const std::string& counter = "sn") {
   return [counter](const std::map<std::string, std::int64_t>& serials) {
-    return std::vector<ObjectText>{{"serial", "SN " + std::to_string(serials.at(counter))}};
+    return std::vector<ObjectText>{{"serial", "SN " + std::to_string(serials.at(counter)), true}};
   };
+}
+
+// The counters a test marks with, created in the store (a counter exists only once created).
+inline void create_counters(SerialStore& store, const std::map<std::string, CounterSpec>& counters,
+                            const std::string& station = "test") {
+  MarkContext ctx;
+  ctx.station = station;
+  store.create_missing(counters, ShiftTable{}, ctx);
 }
 
 // Every issued value exactly once, each belonging to exactly one audit row that names it; every

@@ -90,7 +90,7 @@ TEST(LmcUsb, NoBoardIsAClearError) {
 }
 
 TEST(LmcUsb, InitSequenceAndGoldenJobCrossRealUsbfs) {
-  UsbBench bench;
+  UsbBench bench(test::golden_board(), {}, test::golden_options());
   // Discovery asked for the serial to pick the board, then the init sequence went out.
   const auto init = test::singles(bench.board.wire());
   ASSERT_GE(init.size(), 21u);
@@ -148,10 +148,10 @@ TEST(LmcUsb, StallIsClearedToSwitchTheLaserOff) {
     FAIL() << "no fault";
   } catch (const DeviceFaultError& e) {
     EXPECT_EQ(e.fault().category, FaultCategory::transport);
-    EXPECT_EQ(e.fault().at, 3 * 256u - 10u);
+    EXPECT_EQ(e.fault().at, 3 * 256u - 11u);
     const std::string m = e.what();
     EXPECT_NE(m.find("LIBUSB_ERROR_PIPE"), std::string::npos) << m;
-    EXPECT_NE(m.find("laser port off (confirmed by the board)"), std::string::npos) << m;
+    EXPECT_NE(m.find("; stopped, laser port off confirmed"), std::string::npos) << m;
   }
   const BoardState s = settled(bench.board);
   EXPECT_EQ(s.port & 1, 0);
@@ -228,6 +228,7 @@ TEST(LmcUsbCli, DevicesListsTheBoards) {
   EXPECT_EQ(b["serial"], "00C0FFEE");
   EXPECT_EQ(b["device"], "lmc:00C0FFEE");
   EXPECT_EQ(b["usable"], true);
+  EXPECT_EQ(b["sources"], nlohmann::json::array({"fiber", "mopa", "co2", "uv"}));
   r = mark::test::run_cli({"devices"});
   EXPECT_NE(r.out.find("bus 001 address 002"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("serial 00C0FFEE  (--device lmc:00C0FFEE)"), std::string::npos) << r.out;
@@ -271,7 +272,7 @@ TEST(LmcUsbCli, FrameTracesTheBoxWithTheRedPointer) {
   test::UmockdevBoard usb(tb.get(), board);
   board.start_clock(4);
   const auto r = mark::test::run_cli({"frame", "SN 42", "--height", "2", "--device", "lmc:4C4D4301",
-                                      "--laps", "2", "--json"});
+                                      "--laps", "2", "--no-orientation-mark", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["laps"], 2);

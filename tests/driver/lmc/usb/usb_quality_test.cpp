@@ -20,21 +20,12 @@
 #include "marker/job/sim_evaluator.hpp"
 #include "tests/driver/lmc/lmc_test_support.hpp"
 #include "tests/driver/lmc/usb/umockdev_board.hpp"
+#include "tests/marker/job/serial_job.hpp"
 
 namespace mark::lmc {
 namespace {
 
-JobSpec serial_job(double speed_mm_s) {
-  JobSpec spec;
-  spec.text = "SN 20260042";
-  spec.font = open_font(kBuiltinFontName);
-  spec.layout.height_mm = 1.5;
-  spec.layout.align = Align::center;
-  spec.layout.base = Point(0, 0.5);
-  spec.head = head_sl10();
-  spec.pen = pen_for_head(spec.head, CornerStrategy::blanking, speed_mm_s);
-  return spec;
-}
+using mark::test::serial_job;
 
 struct Marked {
   Quality quality;

@@ -1,0 +1,120 @@
+// The LMC path on the command line without a board: `mark --device lmc-emulated` (real and
+// virtual time) reports the simulated scanner's figures through the board, close to the direct
+// simulator's; `frame` and `lmc probe` run on it; laser sources and a .cor file's lens are
+// refused where they do not fit, in one line naming both sides.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/marker/cli_runner.hpp"
+
+namespace mark {
+namespace {
+
+nlohmann::json run_json(const std::vector<std::string>& args) {
+  const auto r = test::run_cli(args);
+  EXPECT_EQ(r.code, 0) << r.err;
+  return r.code == 0 ? nlohmann::json::parse(r.out) : nlohmann::json::object();
+}
+
+TEST(LmcEmulatedCli, MarkThroughTheEmulatedBoardReportsTheSimulatorsFigures) {
+  const std::vector<std::string> job{"mark", "SN 0042", "--height", "2", "--speed", "400", "--json"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> a = job;
+    a.insert(a.end(), extra.begin(), extra.end());
+    return run_json(a);
+  };
+  const auto direct = with({"--virtual-time"});
+  const auto board = with({"--device", "lmc-emulated"});
+  const auto quick = with({"--device", "lmc-emulated:slowest", "--virtual-time"});
+  for (const auto* j : {&board, &quick}) {
+    ASSERT_EQ((*j)["outcome"], "done");
+    ASSERT_TRUE(j->contains("quality"));
+    const auto& q = (*j)["quality"];
+    // The same strokes through the board: within the chords (5 µm) and a field unit of the
+    // direct path, the whole text covered.
+    EXPECT_LE(q["max_deviation_um"].get<double>(), direct["quality"]["max_deviation_um"].get<double>() + 5 + 2.4);
+    EXPECT_GE(q["coverage_fraction"].get<double>(), 0.95);
+    EXPECT_GT((*j)["device_figures"]["pulses"].get<double>(), 100);
+    EXPECT_GT((*j)["device_figures"]["packets"].get<double>(), 0);
+    EXPECT_FALSE(j->at("device_figures").contains("stop_confirmed"));  // nothing was stopped
+  }
+  EXPECT_NE(board["device"].get<std::string>().find("lmc-emulated:reference (lmc 4C4D4301, real time"), std::string::npos)
+      << board["device"];
+  EXPECT_NE(quick["device"].get<std::string>().find("virtual time"), std::string::npos);
+  // The board took its own time, which the scanner saw tick for tick.
+  EXPECT_NEAR(board["device_figures"]["scanner_device_time_s"].get<double>(), board["mark_time_s"].get<double>(), 0.02);
+}
+
+TEST(LmcEmulatedCli, FrameAndProbeRunOnIt) {
+  const auto frame = run_json({"frame", "SN 42", "--height", "2", "--device", "lmc-emulated:slowest", "--laps", "2",
+                               "--json"});
+  EXPECT_EQ(frame["laps"], 2);
+  EXPECT_EQ(frame["orientation_mark"], true);
+  const auto dir = test::fresh_temp_dir("lmc_emulated_cli_test");
+  const std::string report = (dir / "probe.json").string();
+  const auto probe = run_json({"lmc", "probe", "--device", "lmc-emulated:polygon_10us", "--json", "-o", report});
+  EXPECT_EQ(probe["settings"]["polygon_delay_units"], "10us");
+  EXPECT_EQ(probe["polygon_delay"]["unit"], "10us");
+  EXPECT_EQ(probe["serial"], "4C4D4301");
+  EXPECT_EQ(probe["buffered_packets"], 4);
+  std::ifstream in(report);
+  EXPECT_EQ(nlohmann::json::parse(in), probe);  // the file holds the same report
+
+  auto r = test::run_cli({"lmc", "probe", "--device", "lmc-capture:" + (dir / "x.lmc").string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("a capture file answers nothing; the probe needs a board that does"), std::string::npos) << r.err;
+  r = test::run_cli({"lmc", "probe", "--device", "lmc-emulated:fast"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("no emulated board variant 'fast' (known: reference, exact_ticks"), std::string::npos) << r.err;
+}
+
+TEST(LmcEmulatedCli, SourcesTakeOnlyWhatTheyCan) {
+  auto r = test::run_cli({"mark", "A", "--source", "co2", "--pulse-width", "100", "--device", "lmc-emulated"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("--source co2: pulse width 100 ns: a co2 source (CO2 (continuous wave, PWM power)) has no "
+                       "settable pulse width (only mopa: 2 .. 500 ns; 0 for the source's own)"),
+            std::string::npos)
+      << r.err;
+  r = test::run_cli({"mark", "A", "--frequency", "500"});
+  EXPECT_NE(r.err.find("--source fiber: frequency 500 kHz is outside what a fiber source runs (Q-switched fiber: 1 .. "
+                       "200 kHz)"),
+            std::string::npos)
+      << r.err;
+  for (const char* source : {"co2", "uv", "mopa"}) {
+    const auto j = run_json({"mark", "A", "--height", "2", "--source", source, "--frequency", "20", "--power", "50",
+                             "--device", "lmc-emulated", "--virtual-time", "--json"});
+    EXPECT_EQ(j["outcome"], "done") << source;
+    EXPECT_GT(j["device_figures"]["pulses"].get<double>(), 0) << source;
+  }
+}
+
+// A correction table for a 70 mm lens, legacy format, every delta 0.
+std::string cor_file_for(double lens_mm) {
+  const auto path = test::fresh_temp_file("lmc_emulated_cli_test", "lens.cor");
+  std::vector<char> b(0x24 + 4225 * 8, 0);
+  const double scale = 65536.0 / lens_mm;
+  std::memcpy(b.data() + 0x1C, &scale, 8);
+  std::ofstream(path, std::ios::binary).write(b.data(), std::streamsize(b.size()));
+  return path.string();
+}
+
+TEST(LmcEmulatedCli, ACorrectionFileForAnotherLensIsRefusedNamingBoth) {
+  const std::string cor = cor_file_for(70);
+  auto r = test::run_cli({"mark", "A", "--device", "lmc-emulated", "--cor", cor});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("lens.cor: made for a 70.000 mm lens (scale 936.2286 units/mm), but the lens field is 110 mm: "
+                       "set the field to 70.000 mm or use a correction file for this lens"),
+            std::string::npos)
+      << r.err;
+  const auto j = run_json({"mark", "A", "--height", "2", "--field", "70", "--device", "lmc-emulated", "--cor", cor,
+                           "--virtual-time", "--json"});
+  EXPECT_EQ(j["outcome"], "done");
+  EXPECT_NEAR(j["device_figures"]["cor_lens_mm"].get<double>(), 70, 1e-9);
+  EXPECT_EQ(j["device_figures"]["lens_mm"], 70);
+}
+
+}  // namespace
+}  // namespace mark

@@ -75,7 +75,7 @@ TEST(CliRefusal, LayoutOptionsOutsideTheirRanges) {
        "the text layout leaves the field by 48.250 mm at the right: it spans x 0.500 to 103.250 mm, y 0.000 "
        "to 5.000 mm; the field is 110.000 mm square (±55.000 mm); lower --height, move the text with --x, --y "
        "or --align, or enlarge --field"},
-      {{"layout", "X", "--bogus"}, "The following argument was not expected: --bogus"},
+      {{"layout", "X", "--bogus"}, "layout: unknown option --bogus"},
       {{"layout"}, "text is required"},
   });
 }

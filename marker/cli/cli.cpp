@@ -6,6 +6,8 @@
 #include "base/error.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/interrupt.hpp"
+#include "marker/cli/suggestions.hpp"
+#include "marker/output/output_file.hpp"
 #include "marker/store/store_error.hpp"
 
 namespace mark::cli {
@@ -22,13 +24,17 @@ int run(int argc, char** argv) {
     // (an unknown option, a value outside its range, a missing argument) is one line and exit 1,
     // like every other refusal.
     if (e.get_exit_code() == 0) return app.exit(e);
-    std::cerr << "marker: " << e.what() << "\n";
+    std::cerr << "marker: " << parse_error_line(app, e) << "\n";
     return 1;
   }
   // Ctrl-C / SIGTERM become a stop request the command polls; a command stopped that way
   // exits 130 with nothing half-done.
   interrupt_flag().reset();
   InterruptScope interrupts(interrupt_flag());
+  // A command that wrote a file to standard output ("-o -") gets it back when it ends.
+  struct ReleaseStandardOutput {
+    ~ReleaseStandardOutput() { release_standard_output(); }
+  } release;
   try {
     for (Command& c : commands)
       if (c.parsed()) return c.run();

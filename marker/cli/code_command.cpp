@@ -14,13 +14,15 @@
 #include "marker/cli/commands.hpp"
 #include "marker/cli/hatch_options.hpp"
 #include "marker/cli/head_options.hpp"
+#include "marker/cli/output_options.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/pen_options.hpp"
 #include "marker/codes/code_data.hpp"
 #include "marker/codes/code_json.hpp"
 #include "marker/job/job.hpp"
 #include "marker/job/sim_evaluator.hpp"
-#include "marker/limits/layout_limits.hpp"
+#include "marker/limits/code_settings.hpp"
+#include "marker/limits/head_settings.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/preview/mark_preview.hpp"
 
@@ -33,7 +35,7 @@ struct Args {
   CodeArgs code;
   HatchArgs hatch;
   HeadArgs head;
-  double field_mm = 110;
+  double field_mm = *kField.value;
   PenArgs pen;
   VerifyArgs verify;
   std::string preview;
@@ -96,6 +98,7 @@ void print_summary(const JobSpec& spec, const JobResult& r) {
 
 int run_code(const Args& a) {
   const JobSpec spec = make_spec(a);
+  check_standard_output({{"--preview", &a.preview}, {"--dose-png", &a.dose_png}}, a.json);
   if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
   if (!a.dose_png.empty()) check_output_path("--dose-png", a.dose_png, {".png"});
   if (!a.camera_png.empty()) check_output_path("--camera-png", a.camera_png, {".png"});
@@ -156,15 +159,14 @@ Command make_code_command() {
         add_code_options(*sub, a->code, "");
         add_hatch_options(*sub, a->hatch);
         add_head_options(*sub, a->head, false);
-        add_ranged_option(*sub, "--field", a->field_mm, "field size (square), mm", kFieldRange)->capture_default_str();
+        add_setting(*sub, kField, a->field_mm);
         add_pen_options(*sub, a->pen);
         add_verify_options(*sub, a->verify);
         sub->add_option("--preview", a->preview, "write the planned path over the dose (.png or .svg)");
         sub->add_option("--dose-png", a->dose_png, "write the part itself at the dose raster's pixel (PNG, pixel size in pHYs)");
         sub->add_option("--camera-png", a->camera_png,
                         "write the code reader's camera picture (PNG, pixel size in pHYs)");
-        sub->add_option("--require-grade", a->require_grade,
-                        "exit 2 unless the code grades at least A, B, C or D (ISO/IEC TR 29158)");
+        add_setting(*sub, kRequireGrade, a->require_grade);
         sub->add_flag("--json", a->json, "print one JSON object with the code's figures");
         return sub;
       },

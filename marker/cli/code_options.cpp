@@ -8,31 +8,27 @@
 #include "marker/codes/code_data.hpp"
 #include "marker/cli/option_values.hpp"
 #include "marker/codes/code_reader.hpp"
-#include "marker/limits/code_limits.hpp"
+#include "marker/limits/camera_limits.hpp"
+#include "marker/limits/code_settings.hpp"
 
 namespace mark::cli {
 
 void add_code_options(CLI::App& app, CodeArgs& a, const std::string& p) {
-  const auto o = [&](const char* name) { return "--" + p + name; };
-  app.add_flag(o("escapes"), a.escapes, "interpret \\G \\R \\E \\xHH \\n \\\\ in the code's data");
-  add_ranged_option(app, o("size"), a.size_mm, "code: symbol width without quiet zone, mm", kCodeSizeRange);
-  add_ranged_option(app, o("module"), a.module_mm, "code: module size, mm (default 0.25)", kModuleRange);
-  add_ranged_option(app, o("bar-height"), a.bar_height_mm, "linear codes: bar height, mm (default 15 % of the width)",
-                    kBarHeightRange);
-  app.add_option(o("matrix-size"), a.matrix_size, "Data Matrix: fixed size ROWSxCOLS, e.g. 16x16, 16x48");
-  app.add_option(o("shape"), a.shape, "Data Matrix automatic size: square, rectangular, any")->capture_default_str();
-  app.add_option(o("qr-ecc"), a.qr_ecc, "QR error correction: L, M, Q, H")->capture_default_str();
-  add_ranged_option(app, o("qr-version"), a.qr_version, "QR version (0: the smallest that holds the data)",
-                    kQrVersionRange)->capture_default_str();
-  app.add_option(o("style"), a.style, "code modules as square (hatched), dot, line")->capture_default_str();
-  app.add_option(o("dot"), a.dot, "dot style: spiral or circle")->capture_default_str();
-  add_ranged_option(app, o("dot-size"), a.dot_size, "dot diameter as a share of the module", kDotShareRange)
-      ->capture_default_str();
-  app.add_flag(o("invert"), a.invert, "mark the code's light modules and quiet zone (dark part, marks turn light)");
-  add_ranged_option(app, o("x"), a.x_mm, "code centre x (field frame, mm)", kCodePositionRange)->capture_default_str();
-  add_ranged_option(app, o("y"), a.y_mm, "code centre y (field frame, mm)", kCodePositionRange)->capture_default_str();
-  add_ranged_option(app, o("angle"), a.angle_deg, "rotation of the code, degrees", kCodeAngleRange)
-      ->capture_default_str();
+  add_setting(app, kCodeEscapes, a.escapes, p);
+  add_setting(app, kCodeSize, a.size_mm, p);
+  add_setting(app, kModule, a.module_mm, p);
+  add_setting(app, kBarHeight, a.bar_height_mm, p);
+  add_setting(app, kMatrixSize, a.matrix_size, p);
+  add_setting(app, kMatrixShape, a.shape, p);
+  add_setting(app, kQrEcc, a.qr_ecc, p);
+  add_setting(app, kQrVersion, a.qr_version, p);
+  add_setting(app, kModuleStyle, a.style, p);
+  add_setting(app, kDotShape, a.dot, p);
+  add_setting(app, kDotSize, a.dot_size, p);
+  add_setting(app, kCodeInvert, a.invert, p);
+  add_setting(app, kCodeX, a.x_mm, p);
+  add_setting(app, kCodeY, a.y_mm, p);
+  add_setting(app, kCodeAngle, a.angle_deg, p);
 }
 
 CodeObject to_code_object(const std::string& symbology, const std::string& data, const CodeArgs& a,
@@ -43,7 +39,8 @@ CodeObject to_code_object(const std::string& symbology, const std::string& data,
   c.spec.data = a.escapes ? unescape_code_data(data) : data;
   if (!a.matrix_size.empty()) parse_matrix_size(a.matrix_size, c.spec.matrix_rows, c.spec.matrix_cols);
   c.spec.shape = parse_matrix_shape(a.shape);
-  if (a.qr_ecc.size() != 1) throw InputError(name("qr-ecc") + " '" + a.qr_ecc + "' is not one of L, M, Q, H");
+  if (!kQrEcc.allows(a.qr_ecc))
+    throw InputError(name("qr-ecc") + " '" + a.qr_ecc + "' is not one of " + std::string(kQrEcc.choices));
   c.spec.qr_ecc = a.qr_ecc.front();
   c.spec.qr_version = a.qr_version;
 
@@ -152,30 +149,17 @@ int parse_required_grade(const std::string& text, const std::string& option) {
 }
 
 void add_verify_options(CLI::App& app, VerifyArgs& a) {
-  add_ranged_option(app, "--beam-diameter", a.beam_diameter_mm,
-                    "1/e² beam diameter on the part, mm (its radius insets every fill)", kBeamDiameterRange)
-      ->capture_default_str();
-  add_ranged_option(app, "--line-width", a.line_width_mm,
-                    "material: a single line at --line-speed marks this wide, mm (at most 3 beam diameters)",
-                    kLineWidthRange)
-      ->capture_default_str();
-  add_ranged_option(app, "--line-speed", a.line_speed_mm_s, "material: speed of that reference line, mm/s",
-                    kLineSpeedRange)
-      ->capture_default_str();
-  add_ranged_option(app, "--aperture", a.aperture, "code verifier: synthetic aperture, modules", kApertureRange)
-      ->capture_default_str();
-  app.add_option("--camera", a.camera,
-                 "code reader's camera: KEY=VALUE,… (keys: pixel_um, f_number, defocus_um, falloff_pct, "
-                 "full_well_ke, read_noise_grey, seed, bare_reflectance, mark_reflectance, tone_ratio, "
-                 "grain_pct, …; docs/codes.md)");
-  app.add_option("--reader", a.reader,
-                 "code reader that decides: zxing, libdmtx, zbar (default: any two that read the symbology agree)");
+  add_setting(app, kBeamDiameter, a.beam_diameter_mm);
+  add_setting(app, kLineWidth, a.line_width_mm);
+  add_setting(app, kLineSpeed, a.line_speed_mm_s);
+  add_setting(app, kAperture, a.aperture);
+  add_setting(app, kCamera, a.camera);
+  add_setting(app, kCodeReader, a.reader);
 }
 
 CodeCheckOptions to_verify_options(const VerifyArgs& a) {
   // Each value was checked while parsing; the line width also depends on the beam.
-  check_range("--line-width", a.line_width_mm,
-              Range{kLineWidthRange.min, 3 * a.beam_diameter_mm, "mm (3 beam diameters)"});
+  check_range(kLineWidth.name.flag, a.line_width_mm, limited_range(kLineWidth, 3 * a.beam_diameter_mm, "3 beam diameters"));
   CodeCheckOptions v;
   v.response = {a.beam_diameter_mm, a.line_speed_mm_s, a.line_width_mm};
   v.camera = parse_camera_option(a.camera);

@@ -9,21 +9,23 @@
 #include "marker/codes/code_object.hpp"
 #include "marker/job/code_photo.hpp"
 #include "marker/fill/fill_options.hpp"
+#include "marker/limits/code_settings.hpp"
 
 namespace mark::cli {
 
 struct CodeArgs {
+  // Defaults from the settings table (marker/limits/code_settings.hpp).
   bool escapes = false;
   std::optional<double> size_mm, module_mm, bar_height_mm;
   std::string matrix_size;
-  std::string shape = "square";
-  std::string qr_ecc = "M";
-  int qr_version = 0;
-  std::string style = "square";
-  std::string dot = "spiral";
-  double dot_size = 1.0;
+  std::string shape{kMatrixShape.value};
+  std::string qr_ecc{kQrEcc.value};
+  int qr_version = static_cast<int>(*kQrVersion.value);
+  std::string style{kModuleStyle.value};
+  std::string dot{kDotShape.value};
+  double dot_size = *kDotSize.value;
   bool invert = false;
-  double x_mm = 0, y_mm = 0, angle_deg = 0;
+  double x_mm = *kCodeX.value, y_mm = *kCodeY.value, angle_deg = *kCodeAngle.value;
 };
 
 // `prefix` is put before every option name: "" or "code-".
@@ -34,10 +36,10 @@ CodeObject to_code_object(const std::string& symbology, const std::string& data,
                           const FillOptions& hatch, const std::string& prefix);
 
 struct VerifyArgs {
-  double beam_diameter_mm = 0.04;
-  double line_width_mm = 0.04;
-  double line_speed_mm_s = 1000;
-  double aperture = 0.5;
+  double beam_diameter_mm = *kBeamDiameter.value;
+  double line_width_mm = *kLineWidth.value;
+  double line_speed_mm_s = *kLineSpeed.value;
+  double aperture = *kAperture.value;
   std::string camera;  // KEY=VALUE,… over the default reader's camera
   std::string reader;  // "" (any two agree) or zxing, libdmtx, zbar
 };

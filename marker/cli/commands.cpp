@@ -20,6 +20,7 @@ std::vector<Command> all_commands() {
   c.push_back(make_devices_command());
   c.push_back(make_frame_command());
   c.push_back(make_head_command());
+  c.push_back(make_options_command());
   c.push_back(make_lmc_command());
   return c;
 }

@@ -38,6 +38,7 @@ Command make_store_command();
 Command make_devices_command();
 Command make_frame_command();
 Command make_head_command();
+Command make_options_command();
 Command make_lmc_command();
 
 std::vector<Command> all_commands();

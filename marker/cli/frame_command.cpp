@@ -22,7 +22,7 @@
 #include "marker/cli/option_ranges.hpp"
 #include "marker/frame/frame_paths.hpp"
 #include "marker/frame/orientation_mark.hpp"
-#include "marker/limits/pen_limits.hpp"
+#include "marker/limits/device_settings.hpp"
 
 namespace mark::cli {
 
@@ -31,9 +31,9 @@ Command make_frame_command() {
     std::string text;
     LayoutArgs layout;
     LmcArgs lmc;
-    std::string device = "lmc";
-    std::string shape = "box";
-    double speed_mm_s = 3000;
+    std::string device;
+    std::string shape;
+    double speed_mm_s = 0;
     long long laps = 0;
     bool json = false;
     bool no_orientation_mark = false;
@@ -45,19 +45,14 @@ Command make_frame_command() {
             "frame", "trace the job's outline with the red pointer (laser off) until Ctrl-C");
         sub->add_option("text", a->text, "text of the job (UTF-8; \\n starts a new line)")->required();
         add_layout_options(*sub, a->layout);
-        sub->add_option("--device", a->device,
-                        "lmc, lmc:SERIAL (see 'marker devices'), lmc-capture:FILE or lmc-emulated[:VARIANT]")
-            ->capture_default_str();
-        sub->add_option("--shape", a->shape, "what to trace: box, hull, strokes")
-            ->check(CLI::IsMember({"box", "hull", "strokes"}))
-            ->capture_default_str();
-        add_ranged_option(*sub, "--speed", a->speed_mm_s, "red-pointer speed, mm/s", kSpeedRange)->capture_default_str();
-        add_ranged_option(*sub, "--laps", a->laps, "stop after this many laps (0: until Ctrl-C)",
-                          WholeRange{0, 1'000'000'000});
+        add_setting(*sub, kDevice, a->device);
+        a->device = "lmc";  // framing needs a board
+        add_setting(*sub, kFrameShape, a->shape);
+        add_setting(*sub, kFrameSpeed, a->speed_mm_s);
+        add_setting(*sub, kFrameLaps, a->laps);
         sub->add_flag("--json", a->json,
                       "print {laps, packets, stopped, shape, orientation_mark, width_mm, height_mm, speed_mm_s} at the end");
-        sub->add_flag("--no-orientation-mark", a->no_orientation_mark,
-                      "trace only the job's outline, not the F at its +x side");
+        add_setting(*sub, kNoOrientationMark, a->no_orientation_mark);
         add_lmc_options(*sub, a->lmc);
         return sub;
       },

@@ -16,6 +16,7 @@
 #include "marker/cli/commands.hpp"
 #include "marker/cli/console_progress.hpp"
 #include "marker/cli/gcode_options.hpp"
+#include "marker/cli/output_options.hpp"
 #include "marker/cli/print.hpp"
 #include "marker/cli/tool_measure_report.hpp"
 #include "marker/cnc/depression.hpp"
@@ -24,6 +25,7 @@
 #include "marker/cnc/stroke_gaps.hpp"
 #include "marker/cnc/tool/tool_measure.hpp"
 #include "marker/cnc/toolpath_preview.hpp"
+#include "marker/limits/cnc_settings.hpp"
 #include "marker/output/output_file.hpp"
 
 namespace mark::cli {
@@ -129,6 +131,8 @@ int run_gcode(GcodeArgs& a) {
   const bool protrusion = a.protrusion_mode(), vcarve = a.vcarve_mode();
   validate(a.gcode);  // header and footer lines against the dialect, before any work
   const MachineEnvelope envelope = machine_envelope(a);
+  check_standard_output({{"--output", &a.output}, {"--cleanup-output", &a.cleanup_output}, {"--preview", &a.preview}},
+                        a.json);
   check_output_path("--output", a.output);
   if (!a.cleanup_output.empty()) {
     check_output_path("--cleanup-output", a.cleanup_output);

@@ -15,12 +15,14 @@
 #include "marker/cli/gravure_options.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/option_ranges.hpp"
+#include "marker/cli/output_options.hpp"
+#include "marker/output/output_file.hpp"
 #include "marker/cli/print.hpp"
 #include "marker/gravure/gravure_job.hpp"
 #include "marker/gravure/gravure_json.hpp"
 #include "marker/gravure/gravure_preview.hpp"
 #include "marker/gravure/head_design.hpp"
-#include "marker/limits/gravure_limits.hpp"
+#include "marker/limits/gravure_settings.hpp"
 
 namespace mark::cli {
 namespace {
@@ -28,19 +30,19 @@ namespace {
 struct GravureArgs {
   std::string image;
   std::string mask;
-  std::string screen = "70";
-  int cell_rate_hz = 6250;
+  std::string screen;
+  int cell_rate_hz = 0;
   double resolution = 0;
   bool stagger = false;
   GravureSetup setup;
-  double stylus_angle_deg = 120;
+  double stylus_angle_deg = 0;
   std::string head;
   std::string nominal_head;
-  double sense_noise_um = 0.02;
-  std::string tune = "nominal";
+  double sense_noise_um = 0;
+  std::string tune;
   std::vector<std::string> notches;
   std::string emphasis;
-  double target_hz = 20000;
+  double target_hz = 0;
   bool real_time = false;
   bool no_compare = false;
   bool json = false;
@@ -49,14 +51,14 @@ struct GravureArgs {
 
 GravureJobSpec make_spec(const GravureArgs& a) {
   GravureJobSpec spec;
-  parse_screen("--screen", a.screen, spec.screen);
+  parse_screen(flag(kScreen), a.screen, spec.screen);
   spec.screen.cell_rate_hz = static_cast<std::uint32_t>(a.cell_rate_hz);
   spec.screen.stagger = a.stagger;
   spec.px_per_mm = a.resolution;
   spec.setup = a.setup;
   spec.stylus_angle_deg = a.stylus_angle_deg;
-  if (!a.head.empty()) spec.head.head = parse_head("--head", a.head);
-  if (!a.nominal_head.empty()) spec.nominal_head = parse_head("--nominal-head", a.nominal_head);
+  if (!a.head.empty()) spec.head.head = parse_head(flag(kStylusHead), a.head);
+  if (!a.nominal_head.empty()) spec.nominal_head = parse_head(flag(kNominalHead), a.nominal_head);
   spec.head.sense_noise_um = a.sense_noise_um;
   spec.tuning.target.corner_hz = a.target_hz;
 
@@ -64,12 +66,12 @@ GravureJobSpec make_spec(const GravureArgs& a) {
   if (a.tune == "auto") spec.filters = FilterChoice::tuned;
   else if (a.tune == "nominal") spec.filters = FilterChoice::nominal;
   else if (a.tune == "off") spec.filters = FilterChoice::off;
-  else throw InputError("--tune '" + a.tune + "': expected auto, nominal or off");
+  else throw InputError(flag(kTune) + " '" + a.tune + "': expected " + std::string(kTune.choices));
   if (manual) {
     if (a.tune != "nominal") throw InputError("--notch / --emphasis set the filters by hand: they cannot be combined with --tune " + a.tune);
     spec.filters = FilterChoice::manual;
-    for (const std::string& n : a.notches) spec.manual_bank.sections.push_back(parse_notch("--notch", n));
-    if (!a.emphasis.empty()) spec.manual_bank.sections.push_back(parse_emphasis("--emphasis", a.emphasis));
+    for (const std::string& n : a.notches) spec.manual_bank.sections.push_back(parse_notch(flag(kNotch), n));
+    if (!a.emphasis.empty()) spec.manual_bank.sections.push_back(parse_emphasis(flag(kEmphasis), a.emphasis));
     spec.manual_bank.gain = 1 / spec.nominal_head.static_gain();
   }
   spec.compare_unfiltered = !a.no_compare;
@@ -107,6 +109,9 @@ void print_summary(const GravureReport& r) {
 }
 
 int run_gravure(const GravureArgs& a) {
+  // The preview's path before the engraving, not after it (an engraving runs for seconds).
+  check_standard_output({{"--preview", &a.preview}}, a.json);
+  if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
   const GravureJobSpec spec = make_spec(a);
   GravureReport report = run_gravure_job(spec);
   // Ctrl-C: the drain lifted the stylus within one block; nothing is written, exit 130.
@@ -120,16 +125,11 @@ int run_gravure(const GravureArgs& a) {
   return 0;
 }
 
-void add_setup_options(CLI::App& sub, CellSetup& s, const std::string& prefix, const std::string& name) {
-  const std::string g = name + " setup";
-  add_ranged_option(sub, "--" + prefix + "-depth", s.full_cell_depth_um, name + " full-cell depth (100 % cell), µm",
-                    kCellDepthRange)->capture_default_str()->group(g);
-  add_ranged_option(sub, "--" + prefix + "-channel", s.channel_depth_um,
-                    name + " channel depth between 100 % cells, µm", kChannelDepthRange)->capture_default_str()->group(g);
-  add_ranged_option(sub, "--" + prefix + "-gain", s.gain, name + " gain on the density", kSetupGainRange)
-      ->capture_default_str()->group(g);
-  add_ranged_option(sub, "--" + prefix + "-offset", s.offset_um, name + " offset added to every depth, µm",
-                    kSetupOffsetRange)->capture_default_str()->group(g);
+void add_setup_options(CLI::App& sub, CellSetup& s, const Quantity& depth, const Quantity& channel,
+                       const Quantity& gain, const Quantity& offset, const std::string& group) {
+  for (const auto& [setting, value] : {std::pair{&depth, &s.full_cell_depth_um}, {&channel, &s.channel_depth_um},
+                                       {&gain, &s.gain}, {&offset, &s.offset_um}})
+    add_setting(sub, *setting, *value)->group(group);
 }
 
 }  // namespace
@@ -141,33 +141,24 @@ Command make_gravure_command() {
         auto* sub = app.add_subcommand("gravure", "engrave an image on the simulated gravure stylus head");
         sub->add_option("image", a->image, "8-bit grey image, PNG or PGM (white 0 % … black 100 % density)")->required();
         sub->add_option("--mask", a->mask, "line-work mask of the same size: dark pixels are line-work (LW)");
-        sub->add_option("--screen", a->screen, "screen in lines/cm: ALONG or ALONGxACROSS")->capture_default_str();
-        add_ranged_option(*sub, "--cell-rate", a->cell_rate_hz, "cells engraved per second, Hz",
-                          WholeRange{static_cast<std::int64_t>(kCellRateRange.min),
-                                     static_cast<std::int64_t>(kCellRateRange.max)})
-            ->capture_default_str();
-        add_ranged_option(*sub, "--resolution", a->resolution, "image pixels per mm (0: 4 a cell along the track)",
-                          Range{kResolutionRange.min, kResolutionRange.max, kResolutionRange.unit, false, true});
-        sub->add_flag("--stagger", a->stagger, "offset odd tracks by half a cell");
-        add_setup_options(*sub, a->setup.ct, "ct", "CT");
-        add_setup_options(*sub, a->setup.lw, "lw", "LW");
-        add_ranged_option(*sub, "--lift", a->setup.lift_um, "stylus height above the surface over white, µm", kLiftRange)
-            ->capture_default_str();
-        add_ranged_option(*sub, "--stylus-angle", a->stylus_angle_deg, "diamond's included angle, degrees",
-                          kStylusAngleRange)->capture_default_str();
+        add_setting(*sub, kScreen, a->screen);
+        add_setting(*sub, kCellRate, a->cell_rate_hz);
+        add_setting(*sub, kResolution, a->resolution);
+        add_setting(*sub, kStagger, a->stagger);
+        add_setup_options(*sub, a->setup.ct, kCtDepth, kCtChannel, kCtGain, kCtOffset, "CT setup");
+        add_setup_options(*sub, a->setup.lw, kLwDepth, kLwChannel, kLwGain, kLwOffset, "LW setup");
+        add_setting(*sub, kLift, a->setup.lift_um);
+        add_setting(*sub, kStylusAngle, a->stylus_angle_deg);
         const std::string head = "Head and filters";
-        sub->add_option("--head", a->head, "the simulated head's resonances FREQ_HZ:DAMPING:GAIN,... (default 1800:0.06:0.8,5500:0.04:0.2)")->group(head);
-        sub->add_option("--nominal-head", a->nominal_head, "the head model the default filters are designed for (default: the typical head)")->group(head);
-        add_ranged_option(*sub, "--sense-noise", a->sense_noise_um, "sensing coil noise, µm rms", kSenseNoiseRange)
-            ->capture_default_str()->group(head);
-        sub->add_option("--tune", a->tune, "filters: auto (measure and fit the head), nominal (designed for --nominal-head), off")
-            ->capture_default_str()->group(head);
-        sub->add_option("--notch", a->notches, "a notch filter by hand, FREQ_HZ:DAMPING:DEPTH_DB (repeatable)")->group(head);
-        sub->add_option("--emphasis", a->emphasis, "the emphasis filter by hand, FREQ_HZ:DAMPING:CORNER_HZ:CORNER_DAMPING")->group(head);
-        add_ranged_option(*sub, "--target", a->target_hz, "corner of the flat target response, Hz", kTargetCornerRange)
-            ->capture_default_str()->group(head);
-        sub->add_flag("--real-time", a->real_time, "drain at the stylus clock (default: virtual time, as fast as possible)");
-        sub->add_flag("--no-compare", a->no_compare, "skip the engraving without filters");
+        add_setting(*sub, kStylusHead, a->head)->group(head);
+        add_setting(*sub, kNominalHead, a->nominal_head)->group(head);
+        add_setting(*sub, kSenseNoise, a->sense_noise_um)->group(head);
+        add_setting(*sub, kTune, a->tune)->group(head);
+        add_setting(*sub, kNotch, a->notches)->group(head);
+        add_setting(*sub, kEmphasis, a->emphasis)->group(head);
+        add_setting(*sub, kTargetCorner, a->target_hz)->group(head);
+        add_setting(*sub, kRealTime, a->real_time);
+        add_setting(*sub, kNoCompare, a->no_compare);
         sub->add_flag("--json", a->json, "print one JSON object with the job's figures");
         sub->add_option("--preview", a->preview, "write intended and engraved cells side by side (.png or .svg)");
         return sub;

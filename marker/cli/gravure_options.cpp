@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "base/error.hpp"
-#include "marker/limits/gravure_limits.hpp"
+#include "marker/limits/gravure_settings.hpp"
 
 namespace mark::cli {
 namespace {
@@ -44,7 +44,7 @@ std::vector<double> numbers(const std::string& option, const std::string& text, 
 
 void parse_screen(const std::string& option, const std::string& text, GravureScreen& screen) {
   const std::vector<double> v = numbers(option, text, 'x', 1, 2, "LINES_PER_CM or ALONGxACROSS, e.g. 70 or 70x60");
-  const Range lines{kCellsPerMmRange.min * 10, kCellsPerMmRange.max * 10, "lines/cm"};
+  const Range lines{kCellsPerMmBounds.range().min * 10, kCellsPerMmBounds.range().max * 10, "lines/cm"};
   check_range(option + " along", v[0], lines);
   const double across = v.size() == 2 ? v[1] : v[0];
   check_range(option + " across", across, lines);
@@ -60,9 +60,9 @@ StylusHeadModel parse_head(const std::string& option, const std::string& text) {
   for (std::size_t i = 0; i < modes.size(); ++i) {
     const std::vector<double> v = numbers(option, modes[i], ':', 3, 3, form);
     const std::string at = option + " resonance " + std::to_string(i + 1);
-    check_range(at + " frequency", v[0], kModeFrequencyRange);
-    check_range(at + " damping", v[1], kModeDampingRange);
-    check_range(at + " gain", v[2], kModeGainRange);
+    check_range(at + " frequency", v[0], kModeFrequencyBounds.range());
+    check_range(at + " damping", v[1], kModeDampingBounds.range());
+    check_range(at + " gain", v[2], kModeGainBounds.range());
     head.modes.push_back({v[0], v[1], v[2]});
   }
   return head;
@@ -70,21 +70,21 @@ StylusHeadModel parse_head(const std::string& option, const std::string& text) {
 
 FilterSection parse_notch(const std::string& option, const std::string& text) {
   const std::vector<double> v = numbers(option, text, ':', 3, 3, "FREQ_HZ:DAMPING:DEPTH_DB, e.g. 1800:0.06:18");
-  check_range(option + " frequency", v[0], kFilterFrequencyRange);
-  check_range(option + " damping", v[1], {kPoleDampingRange.min, 1, ""});
-  check_range(option + " depth", v[2], kNotchDepthRange);
+  check_range(option + " frequency", v[0], kFilterFrequencyBounds.range());
+  check_range(option + " damping", v[1], {kPoleDampingBounds.range().min, 1, ""});
+  check_range(option + " depth", v[2], kNotchDepthBounds.range());
   const FilterSection s = notch_section(v[0], v[1], v[2]);
-  check_range(option + " damping × depth (the notch's pole damping)", s.pole_damping, kPoleDampingRange);
+  check_range(option + " damping × depth (the notch's pole damping)", s.pole_damping, kPoleDampingBounds.range());
   return s;
 }
 
 FilterSection parse_emphasis(const std::string& option, const std::string& text) {
   const std::vector<double> v =
       numbers(option, text, ':', 4, 4, "FREQ_HZ:DAMPING:CORNER_HZ:CORNER_DAMPING, e.g. 5500:0.5:20000:0.707");
-  check_range(option + " frequency", v[0], kFilterFrequencyRange);
-  check_range(option + " damping", v[1], kZeroDampingRange);
-  check_range(option + " corner frequency", v[2], kFilterFrequencyRange);
-  check_range(option + " corner damping", v[3], kPoleDampingRange);
+  check_range(option + " frequency", v[0], kFilterFrequencyBounds.range());
+  check_range(option + " damping", v[1], kZeroDampingBounds.range());
+  check_range(option + " corner frequency", v[2], kFilterFrequencyBounds.range());
+  check_range(option + " corner damping", v[3], kPoleDampingBounds.range());
   return emphasis_section(v[0], v[1], v[2], v[3]);
 }
 

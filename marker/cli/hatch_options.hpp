@@ -12,17 +12,19 @@
 #include <vector>
 
 #include "marker/fill/fill_options.hpp"
+#include "marker/limits/fill_settings.hpp"
 
 namespace mark::cli {
 
 struct HatchArgs {
+  // Defaults from the settings table (marker/limits/fill_settings.hpp).
   std::vector<double> spacing_mm;
   std::vector<double> angle_deg;
-  std::string direction = "bidirectional";
-  std::string order = "short";
+  std::string direction{kHatchDirection.value};
+  std::string order{kHatchOrder.value};
   std::optional<double> inset_mm;
-  int contour_passes = 0;
-  std::string contour_placement = "before";
+  int contour_passes = static_cast<int>(*kContourPasses.value);
+  std::string contour_placement{kContourPlacement.value};
   std::optional<double> contour_inset_mm;
   std::optional<double> contour_spacing_mm;
 };

@@ -7,7 +7,9 @@
 
 #include "marker/cli/commands.hpp"
 #include "marker/cli/head_options.hpp"
+#include "marker/cli/output_options.hpp"
 #include "marker/head/head_fit.hpp"
+#include "marker/output/output_file.hpp"
 
 namespace mark::cli {
 
@@ -33,8 +35,10 @@ Command make_head_command() {
       [a] {
         SimScannerOptions sim;
         sim.head = simulated_head(a->head);
-        const HeadProfile p = identify_head(sim);
         const std::string path = a->output.empty() ? "head-" + sim.head.name + ".json" : a->output;
+        check_standard_output({{"--output", &path}}, a->json);
+        check_output_path("--output", path);
+        const HeadProfile p = identify_head(sim);
         save_head_profile(p, path);
         if (a->json) {
           std::cout << head_profile_json(p);

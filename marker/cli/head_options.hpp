@@ -8,14 +8,15 @@
 #include <string>
 
 #include "driver/sim/head_model.hpp"
+#include "marker/limits/head_settings.hpp"
 
 namespace mark::cli {
 
 struct HeadArgs {
-  std::string head = "SL10";
+  std::string head{kHead.value};  // defaults from marker/limits/head_settings.hpp
   std::string model;             // "", "first" or "second"
   std::optional<double> zeta;    // second-order damping (default: the preset's)
-  double laser_rise_us = 0;
+  double laser_rise_us = *kLaserRise.value;
 };
 
 void add_head_options(CLI::App& app, HeadArgs& args, bool laser);

@@ -13,10 +13,15 @@
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
+#include "marker/cli/pen_options.hpp"
 #include "marker/cli/production_options.hpp"
 #include "marker/job/auto_speed.hpp"
-#include "marker/limits/counter_limits.hpp"
-#include "marker/limits/pen_limits.hpp"
+#include "marker/job/head_pen.hpp"
+#include "marker/limits/device_settings.hpp"
+#include "marker/limits/head_settings.hpp"
+#include "marker/limits/layout_settings.hpp"
+#include "marker/limits/pen_settings.hpp"
+#include "marker/limits/production_settings.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/production/part_texts.hpp"
 #include "marker/production/text_repeats.hpp"
@@ -34,23 +39,23 @@ struct CheckArgs {
 struct NewArgs {
   std::string output;
   std::string text;
-  std::string object = "text";
+  std::string object;
   LayoutArgs layout;
-  std::string head = "SL10";
-  double spot_um = 40;
-  std::string pen = "default";
-  std::string corner = "blanking";
-  std::string speed = "auto";  // mm/s, or auto: from the first part's figure and the head
+  std::string head;
+  double spot_um = 0;
+  std::string pen;
+  std::string corner;
+  std::string speed;  // mm/s, or auto: from the first part's figure and the head
   std::optional<double> jump_speed_mm_s, tick_us;
-  double power_pct = 100, frequency_khz = 30, pulse_width_ns = 0;
-  std::string source = "fiber";
+  LaserSettings laser;
+  std::string source{kLaserSource.value};  // laser.source, as --source names it
   int passes = 1;
   long long start = 1, step = 1, marks_per_serial = 1;
   int width = 0;
   std::optional<long long> limit;
-  std::string at_limit = "stop", alphabet = "decimal", padding = "keep", reset = "never";
-  std::string time_zone = "local";
-  std::string device = "sim";
+  std::string at_limit, alphabet, padding, reset;
+  std::string time_zone;
+  std::string device;
   std::string shifts;  // "A=06:00,B=14:00"
   std::vector<std::string> vars;
   bool force = false;
@@ -130,50 +135,72 @@ int run_check(const CheckArgs& a) {
   return 0;
 }
 
-double speed_number(const std::string& speed) {
-  const std::optional<double> v = parse_number(speed);
-  if (!v) throw InputError("--speed: '" + speed + "' is neither auto nor a number (range: " + kSpeedRange.text() + ")");
-  check_range("--speed", *v, kSpeedRange, speed);
-  return *v;
+// json[KEY] = value for a setting's job-file key; a key with dots ("head.spot_diameter_um")
+// goes into the objects it names.
+template <class T>
+void put(nlohmann::ordered_json& json, const SettingName& name, const T& value) {
+  nlohmann::ordered_json* at = &json;
+  std::string_view key = name.key;
+  for (std::size_t dot = key.find('.'); dot != std::string_view::npos; dot = key.find('.')) {
+    at = &(*at)[std::string(key.substr(0, dot))];
+    key.remove_prefix(dot + 1);
+  }
+  (*at)[std::string(key)] = value;
 }
 
 nlohmann::ordered_json new_job_json(const NewArgs& a) {
-  nlohmann::ordered_json layout = {{"template", a.text}, {"pen", a.pen}};
+  nlohmann::ordered_json object = nlohmann::ordered_json::object();
+  put(object, kObjectName.name, a.object);
+  object["kind"] = "text";
+  put(object, kTemplate.name, a.text);
+  put(object, kObjectPen.name, a.pen);
   const LayoutArgs& l = a.layout;
-  layout["font"] = l.font;
-  layout["height_mm"] = l.height_mm;
-  if (l.width_factor != 1) layout["width_factor"] = l.width_factor;
-  if (l.gap_mm != 0) layout["gap_mm"] = l.gap_mm;
-  if (l.line_spacing != 1) layout["line_spacing"] = l.line_spacing;
-  if (l.align != "left") layout["align"] = l.align;
-  layout["x_mm"] = l.x_mm;
-  layout["y_mm"] = l.y_mm;
-  if (l.angle_deg != 0) layout["angle_deg"] = l.angle_deg;
-  if (l.italic_deg != 0) layout["italic_deg"] = l.italic_deg;
-  if (l.mirror) layout["mirror"] = true;
-  if (l.replace_missing) layout["replace_missing"] = true;
+  // The text's layout: the font, height and base point always, the rest where not the default.
+  put(object, kFont.name, l.font);
+  put(object, kHeight.name, l.height_mm);
+  const auto unless_default = [&](const Quantity& s, double v) {
+    if (v != s.fallback()) put(object, s.name, v);
+  };
+  unless_default(kWidthFactor, l.width_factor);
+  unless_default(kGap, l.gap_mm);
+  unless_default(kLineSpacing, l.line_spacing);
+  if (l.align != kAlign.value) put(object, kAlign.name, l.align);
+  put(object, kX.name, l.x_mm);
+  put(object, kY.name, l.y_mm);
+  unless_default(kAngle, l.angle_deg);
+  unless_default(kItalic, l.italic_deg);
+  if (l.mirror) put(object, kMirror.name, true);
+  if (l.replace_missing) put(object, kReplaceMissing.name, true);
   if (!l.circle.empty()) {
-    const LayoutOptions o = to_layout_options(l);
-    nlohmann::ordered_json c = {{"cx_mm", o.circle->center.x()}, {"cy_mm", o.circle->center.y()},
-                        {"radius_mm", o.circle->radius_mm}, {"inside", o.circle->inside}};
-    if (o.circle->start_angle_deg) c["start_angle_deg"] = *o.circle->start_angle_deg;
-    layout["circle"] = c;
+    const CircleFit c = *to_layout_options(l).circle;
+    put(object, kCircleX.name, c.center.x());
+    put(object, kCircleY.name, c.center.y());
+    put(object, kCircleRadius.name, c.radius_mm);
+    put(object, kInside.name, c.inside);
+    if (c.start_angle_deg) put(object, kStartAngle.name, *c.start_angle_deg);
   }
-  nlohmann::ordered_json object = {{"name", a.object}, {"kind", "text"}};
-  object.update(layout);
 
-  nlohmann::ordered_json pen = {{"corner", a.corner}, {"speed_mm_s", a.speed == "auto" ? 1000.0 : speed_number(a.speed)},
-                        {"power_pct", a.power_pct}, {"frequency_khz", a.frequency_khz},
-                        {"pulse_width_ns", a.pulse_width_ns}, {"source", a.source}, {"passes", a.passes}};
-  if (a.jump_speed_mm_s) pen["jump_speed_mm_s"] = *a.jump_speed_mm_s;
-  if (a.tick_us) pen["tick_us"] = *a.tick_us;
+  nlohmann::ordered_json pen = nlohmann::ordered_json::object();
+  put(pen, kCorner.name, a.corner);
+  // auto: run_new writes the speed it picks once the job reads back. A number is checked within
+  // the head's limit as the job file's reader checks it (an unknown head is refused there).
+  const std::optional<HeadModel> head = find_head(a.head);
+  const Range speeds = head ? head_speed_range(kMarkSpeed, *head) : kMarkSpeed.range();
+  put(pen, kMarkSpeed.name, number_or_word(kMarkSpeed, a.speed, kAutoSpeed, speeds).value_or(kMarkSpeed.fallback()));
+  put(pen, kPower.name, a.laser.power_pct);
+  put(pen, kFrequency.name, a.laser.frequency_khz);
+  put(pen, kPulseWidth.name, a.laser.pulse_width_ns);
+  put(pen, kLaserSource.name, a.source);
+  put(pen, kPasses.name, a.passes);
+  if (a.jump_speed_mm_s) put(pen, kJumpSpeed.name, *a.jump_speed_mm_s);
+  if (a.tick_us) put(pen, kTick.name, *a.tick_us);
 
-  nlohmann::ordered_json job = {{"format", kJobFormat},
-                        {"name", std::filesystem::path(a.output).stem().string()},
-                        {"device", a.device},
-                        {"head", {{"model", a.head}, {"spot_diameter_um", a.spot_um}}},
-                        {"field_mm", l.field_mm},
-                        {"time_zone", a.time_zone}};
+  nlohmann::ordered_json job = {{"format", kJobFormat}, {"name", std::filesystem::path(a.output).stem().string()}};
+  put(job, kDevice.name, a.device);
+  job[std::string(kHead.name.key)] = {{"model", a.head}};  // the head's object form, which holds its spot too
+  put(job, kSpot.name, a.spot_um);
+  put(job, kField.name, l.field_mm);
+  put(job, kTimeZone.name, a.time_zone);
   if (!a.shifts.empty()) {
     nlohmann::ordered_json shifts = nlohmann::ordered_json::array();
     std::size_t pos = 0;
@@ -182,20 +209,27 @@ nlohmann::ordered_json new_job_json(const NewArgs& a) {
       const std::string item = a.shifts.substr(pos, end - pos);
       const std::size_t eq = item.find('=');
       if (eq == std::string::npos)
-        throw InputError("--shifts '" + a.shifts + "': expected CODE=HH:MM,… e.g. A=06:00,B=14:00,C=22:00");
+        throw InputError(std::string(kShifts.name.flag) + " '" + a.shifts +
+                         "': expected CODE=HH:MM,… e.g. A=06:00,B=14:00,C=22:00");
       shifts.push_back({{"code", item.substr(0, eq)}, {"start", item.substr(eq + 1)}});
       pos = end + 1;
     }
-    job["shifts"] = shifts;
+    put(job, kShifts.name, shifts);
   }
   const auto vars = parse_sets(a.vars);
-  if (!vars.empty()) job["variables"] = nlohmann::ordered_json(vars);
+  if (!vars.empty()) put(job, kVariables.name, nlohmann::ordered_json(vars));
   nlohmann::ordered_json counters = nlohmann::ordered_json::object();
-  for (const std::string& name : TextTemplate::parse(a.text, "--text").counters()) {
-    nlohmann::ordered_json c = {{"start", a.start}, {"step", a.step}, {"width", a.width},
-                        {"padding", a.padding}, {"alphabet", a.alphabet}, {"at_limit", a.at_limit},
-                        {"marks_per_serial", a.marks_per_serial}, {"reset", a.reset}};
-    if (a.limit) c["limit"] = *a.limit;
+  for (const std::string& name : TextTemplate::parse(a.text, std::string(kTemplate.name.flag)).counters()) {
+    nlohmann::ordered_json c = nlohmann::ordered_json::object();
+    put(c, kCounterStart.name, a.start);
+    put(c, kCounterStep.name, a.step);
+    put(c, kCounterWidth.name, a.width);
+    put(c, kPadding.name, a.padding);
+    put(c, kAlphabet.name, a.alphabet);
+    put(c, kAtLimit.name, a.at_limit);
+    put(c, kMarksPerSerial.name, a.marks_per_serial);
+    put(c, kReset.name, a.reset);
+    if (a.limit) put(c, kCounterLimit.name, *a.limit);
     counters[name] = c;
   }
   if (!counters.empty()) job["counters"] = counters;
@@ -221,7 +255,7 @@ int run_new(const NewArgs& a) {
   if (std::filesystem::exists(a.output) && !a.force)
     throw InputError(a.output + " exists; give --force to replace it");
   nlohmann::ordered_json j = new_job_json(a);
-  if (a.speed == "auto") j["pens"][a.pen]["speed_mm_s"] = auto_pen_speed(j, a.output);
+  if (a.speed == kAutoSpeed) put(j["pens"][a.pen], kMarkSpeed.name, auto_pen_speed(j, a.output));
   const std::string text = j.dump(2) + "\n";
   parse_job(text, a.output);  // what we write must read back: the same checks as any job file
   write_file_whole(a.output, text);  // a reader never sees half a job
@@ -241,53 +275,38 @@ Command make_job_command() {
         job->require_subcommand(1);
         auto* c = job->add_subcommand("check", "validate a job file and show what its next part would be");
         c->add_option("file", check->file, "job file (.json)")->required();
-        c->add_option("--set", check->sets, "variable value NAME=VALUE (repeatable)");
+        add_setting(*c, kSet, check->sets);
         c->add_flag("--json", check->json, "print one JSON object");
         auto* n = job->add_subcommand("new", "write a job file from command-line options");
         NewArgs& a = *created;
         n->add_option("-o,--output", a.output, "job file to write")->required();
-        n->add_option("--text", a.text, "template: text with {serial}, {date:%y%j}, {var:lot}, {shift}")->required();
-        n->add_option("--name", a.object, "the object's name")->capture_default_str();
+        add_setting(*n, kTemplate, a.text)->required();
+        add_setting(*n, kObjectName, a.object);
         add_layout_options(*n, a.layout);
-        n->add_option("--head", a.head, "scan head: SL10, SL14, cheap, SA14")->capture_default_str();
-        add_ranged_option(*n, "--spot", a.spot_um, "focused spot diameter, µm", kSpotRange)->capture_default_str();
-        n->add_option("--pen", a.pen, "the pen's name")->capture_default_str();
-        n->add_option("--corner", a.corner, "corner strategy: blanking, delays, none")->capture_default_str();
-        n->add_option("--speed", a.speed,
-                      "marking speed, mm/s (at most the head's limit), or auto: what `mark --speed auto` "
-                      "picks for the first part's text, written into the pen")
-            ->capture_default_str();
-        add_ranged_option(*n, "--jump-speed", a.jump_speed_mm_s,
-                          "jump speed, mm/s (default: the head's; at most its limit)", kSpeedRange);
-        add_ranged_option(*n, "--tick", a.tick_us, "locus tick, µs (default 10; at most 20 % of the head's τ)",
-                          kTickRange);
-        add_ranged_option(*n, "--power", a.power_pct, "laser power, %", kPowerRange)->capture_default_str();
-        add_ranged_option(*n, "--frequency", a.frequency_khz, "pulse frequency, kHz", kFrequencyRange)
-            ->capture_default_str();
-        add_ranged_option(*n, "--pulse-width", a.pulse_width_ns, "MOPA pulse width, ns (0: the source's default)",
-                          kPulseWidthRange)
-            ->capture_default_str();
-        n->add_option("--source", a.source, "laser source: fiber (Q-switched), mopa, co2, uv")
-            ->check(CLI::IsMember({"fiber", "mopa", "co2", "uv"}))
-            ->capture_default_str();
-        add_ranged_option(*n, "--passes", a.passes, "times each object is marked", kPassesRange)->capture_default_str();
-        add_ranged_option(*n, "--start", a.start, "counters: first value", kCounterValueRange)->capture_default_str();
-        add_ranged_option(*n, "--step", a.step, "counters: step (negative counts down)", kCounterStepRange)
-            ->capture_default_str();
-        add_ranged_option(*n, "--width", a.width, "counters: digits (0: as many as needed)", kCounterWidthRange)
-            ->capture_default_str();
-        add_ranged_option(*n, "--limit", a.limit, "counters: last value", kCounterValueRange);
-        n->add_option("--at-limit", a.at_limit, "counters: stop or wrap")->capture_default_str();
-        n->add_option("--alphabet", a.alphabet, "counters: decimal, hex, base36, base33")->capture_default_str();
-        n->add_option("--padding", a.padding, "counters: keep, suppress, blank")->capture_default_str();
-        add_ranged_option(*n, "--marks-per-serial", a.marks_per_serial, "counters: parts per value",
-                          kMarksPerSerialRange)
-            ->capture_default_str();
-        n->add_option("--reset", a.reset, "counters: never, midnight, shift")->capture_default_str();
-        n->add_option("--device", a.device, "the device the job marks on: sim, or the station's board: lmc, lmc:SERIAL")->capture_default_str();
-        n->add_option("--time-zone", a.time_zone, "dates, shifts and resets: local, UTC or e.g. Europe/Berlin")->capture_default_str();
-        n->add_option("--shifts", a.shifts, "shift codes and start times: A=06:00,B=14:00,C=22:00");
-        n->add_option("--var", a.vars, "variable default NAME=VALUE (repeatable)");
+        add_setting(*n, kHead, a.head);
+        add_setting(*n, kSpot, a.spot_um);
+        add_setting(*n, kObjectPen, a.pen);
+        add_setting(*n, kCorner, a.corner);
+        add_setting(*n, kMarkSpeed, a.speed, kAutoSpeed,
+                    std::string(kAutoSpeedHelp) + " for the first part's text, written into the pen");
+        // Checked against the head when the written job reads back (as any job file's pen).
+        add_head_limited_setting(*n, kJumpSpeed, a.jump_speed_mm_s);
+        add_head_limited_setting(*n, kTick, a.tick_us);
+        add_laser_options(*n, a.laser);
+        add_setting(*n, kLaserSource, a.source);
+        add_setting(*n, kPasses, a.passes);
+        for (const auto& [setting, value] : {std::pair{&kCounterStart, &a.start}, {&kCounterStep, &a.step},
+                                             {&kMarksPerSerial, &a.marks_per_serial}})
+          add_setting(*n, *setting, *value)->group("Counters (every counter of the text)");
+        for (const auto& [setting, value] : {std::pair{&kAtLimit, &a.at_limit}, {&kAlphabet, &a.alphabet},
+                                             {&kPadding, &a.padding}, {&kReset, &a.reset}})
+          add_setting(*n, *setting, *value)->group("Counters (every counter of the text)");
+        add_setting(*n, kCounterWidth, a.width)->group("Counters (every counter of the text)");
+        add_setting(*n, kCounterLimit, a.limit)->group("Counters (every counter of the text)");
+        add_setting(*n, kDevice, a.device);
+        add_setting(*n, kTimeZone, a.time_zone);
+        add_setting(*n, kShifts, a.shifts);
+        add_setting(*n, kVariables, a.vars);
         n->add_flag("--force", a.force, "replace an existing file");
         *subs = {c, n};
         return job;

@@ -7,7 +7,8 @@
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
 #include "marker/layout/respace.hpp"
-#include "marker/limits/layout_limits.hpp"
+#include "marker/limits/head_settings.hpp"
+#include "marker/limits/layout_settings.hpp"
 
 namespace mark::cli {
 namespace {
@@ -15,9 +16,9 @@ namespace {
 CircleFit parse_circle(const LayoutArgs& args) {
   const std::string option = "--circle '" + args.circle + "'";
   const std::vector<double> v = parse_numbers("--circle", args.circle, ",", 3, "CX,CY,R in millimetres");
-  check_range(option + " centre x", v[0], kPositionRange);
-  check_range(option + " centre y", v[1], kPositionRange);
-  check_range(option + " radius", v[2], kRadiusRange);
+  check_range(option + " centre x", v[0], kCircleX.range());
+  check_range(option + " centre y", v[1], kCircleY.range());
+  check_range(option + " radius", v[2], kCircleRadius.range());
   CircleFit fit;
   fit.center = Point(v[0], v[1]);
   fit.radius_mm = v[2];
@@ -42,66 +43,44 @@ std::string unescape_text(const std::string& text) {
   return out;
 }
 
-void add_layout_options(CLI::App& app, LayoutArgs& a, bool galvo_field) {
-  app.add_option("--font", a.font, "font: 'builtin', an installed font name (see 'marker fonts') or a .jhf/.lff/.cxf file")
-      ->capture_default_str();
-  add_ranged_option(app, "--height", a.height_mm, "character (cap) height, mm", kHeightRange)
-      ->capture_default_str();
-  add_ranged_option(app, "--width-factor", a.width_factor, "horizontal scale of the letters", kWidthFactorRange)
-      ->capture_default_str();
-  add_ranged_option(app, "--gap", a.gap_mm, "extra gap between letters, mm (at least -height/2)", kGapRange)
-      ->capture_default_str();
-  add_ranged_option(app, "--line-spacing", a.line_spacing, "factor on the font's line height", kLineSpacingRange)
-      ->capture_default_str();
-  app.add_option("--align", a.align, "alignment of each line about the base point")
-      ->check(CLI::IsMember({"left", "center", "right"}))
-      ->capture_default_str();
-  const std::string frame = galvo_field ? "field frame, mm; inside the field" : "work coordinates, mm; inside the --travel";
-  add_ranged_option(app, "--x", a.x_mm, "base point x (" + frame + ")", kPositionRange)->capture_default_str();
-  add_ranged_option(app, "--y", a.y_mm, "base point y (first baseline; " + frame + ")", kPositionRange)
-      ->capture_default_str();
-  add_ranged_option(app, "--angle", a.angle_deg, "inclined fitting: rotate the text about the base point, degrees",
-                    kAngleRange)
-      ->capture_default_str();
-  auto* circle = app.add_option("--circle", a.circle,
-                                "circular fitting around CX,CY with radius R (mm; CX, CY " +
-                                    kPositionRange.text() + ", R " + kRadiusRange.text() + ")");
-  auto* start = add_ranged_option(app, "--start-angle", a.start_angle_deg,
-                                  "circular fitting: angle where the text starts, degrees", kAngleRange);
-  auto* centred = app.add_flag("--self-centred,--self-centered", a.self_centred,
-                               "circular fitting: centre the text on the top (bottom with --inside) of the circle (default)");
-  auto* inside = app.add_flag("--inside", a.inside, "circular fitting: letters inside the circle, reading along its bottom");
+void add_layout_options(CLI::App& app, LayoutArgs& a, const Text& font, bool galvo_field) {
+  add_setting(app, font, a.font);
+  add_setting(app, kHeight, a.height_mm);
+  add_setting(app, kWidthFactor, a.width_factor);
+  add_setting(app, kGap, a.gap_mm);
+  add_setting(app, kLineSpacing, a.line_spacing);
+  add_setting(app, kAlign, a.align);
+  add_setting(app, galvo_field ? kX : kWorkX, a.x_mm);
+  add_setting(app, galvo_field ? kY : kWorkY, a.y_mm);
+  add_setting(app, kAngle, a.angle_deg);
+  auto* circle = add_setting(app, kCircle, a.circle);
+  auto* start = add_setting(app, kStartAngle, a.start_angle_deg);
+  auto* centred = add_setting(app, kSelfCentred, a.self_centred);
+  auto* inside = add_setting(app, kInside, a.inside);
   start->needs(circle);
   centred->needs(circle);
   inside->needs(circle);
   start->excludes(centred);
-  add_ranged_option(app, "--italic", a.italic_deg, "font inclination (shear), degrees", kItalicRange)
-      ->capture_default_str();
-  app.add_flag("--mirror", a.mirror, "mirror the text (reverse the letter order, mirror each letter)");
-  app.add_flag("--replace-missing", a.replace_missing, "draw the font's replacement glyph for characters it lacks");
-  if (galvo_field)
-    add_ranged_option(app, "--field", a.field_mm, "field size (square), mm", kFieldRange)->capture_default_str();
+  add_setting(app, kItalic, a.italic_deg);
+  add_setting(app, kMirror, a.mirror);
+  add_setting(app, kReplaceMissing, a.replace_missing);
+  if (galvo_field) add_setting(app, kField, a.field_mm);
 }
 
 void add_spacing_options(CLI::App& app, LayoutArgs& a) {
-  add_ranged_option(app, "--char-spacing", a.char_spacing_pct,
-                    "gap after each letter's drawing, % of the character height (F-Engrave's character "
-                    "spacing; default: the font's own)",
-                    kCharSpacingRange);
-  add_ranged_option(app, "--word-spacing", a.word_spacing_pct,
-                    "advance of a space, % of the character height (default: the font's own)", kWordSpacingRange);
+  add_setting(app, kCharSpacing, a.char_spacing_pct);
+  add_setting(app, kWordSpacing, a.word_spacing_pct);
 }
 
 void add_fill_options(CLI::App& app, LayoutArgs& a) {
-  app.add_option("--fill", a.fill, "fill outline-font letters: none, hatch")->capture_default_str();
-  app.add_option("--fill-rule", a.fill_rule, "inside of overlapping outlines: nonzero (TrueType, CFF), evenodd")
-      ->capture_default_str();
+  add_setting(app, kFill, a.fill);
+  add_setting(app, kFillRule, a.fill_rule);
   add_hatch_options(app, a.hatch);
 }
 
 std::optional<FillOptions> to_fill(const LayoutArgs& a, double beam_radius_mm) {
   if (a.fill == "none") return std::nullopt;
-  if (a.fill != "hatch") throw InputError("--fill '" + a.fill + "' is not one of none, hatch");
+  if (!kFill.allows(a.fill)) throw InputError("--fill '" + a.fill + "' is not one of " + std::string(kFill.choices));
   FillOptions o = to_fill_options(a.hatch, beam_radius_mm);
   o.rule = parse_fill_rule(a.fill_rule);
   return o;

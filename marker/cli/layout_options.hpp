@@ -12,41 +12,44 @@
 #include "marker/cli/hatch_options.hpp"
 #include "marker/fill/fill.hpp"
 #include "marker/layout/layout.hpp"
-#include "marker/limits/value_range.hpp"
+#include "marker/limits/head_settings.hpp"
+#include "marker/limits/layout_settings.hpp"
 
 namespace mark::cli {
 
 struct LayoutArgs {
-  std::string font = "builtin";
-  double height_mm = 5.0;
-  double width_factor = 1.0;
-  double gap_mm = 0.0;
-  double line_spacing = 1.0;
-  std::string align = "left";
-  double x_mm = 0.0;
-  double y_mm = 0.0;
-  double angle_deg = 0.0;
+  // Defaults from the settings table (marker/limits/layout_settings.hpp).
+  std::string font{kFont.value};
+  double height_mm = *kHeight.value;
+  double width_factor = *kWidthFactor.value;
+  double gap_mm = *kGap.value;
+  double line_spacing = *kLineSpacing.value;
+  std::string align{kAlign.value};
+  double x_mm = *kX.value;
+  double y_mm = *kY.value;
+  double angle_deg = *kAngle.value;
   std::string circle;  // "CX,CY,R"
   std::optional<double> start_angle_deg;
   bool self_centred = false;
   bool inside = false;
-  double italic_deg = 0.0;
+  double italic_deg = *kItalic.value;
   bool mirror = false;
   bool replace_missing = false;
-  double field_mm = 110.0;
+  double field_mm = *kField.value;
   // Spacing as F-Engrave gives it (add_spacing_options): the gap after each letter's drawing and
   // the advance of a space, in % of the character height; unset: the font's own spacing.
   std::optional<double> char_spacing_pct;
   std::optional<double> word_spacing_pct;
   // Filled outline fonts.
-  std::string fill = "none";       // none | hatch
-  std::string fill_rule = "nonzero";
+  std::string fill{kFill.value};  // none | hatch
+  std::string fill_rule{kFillRule.value};
   HatchArgs hatch;
 };
 
-// `galvo_field`: the text is marked in a square galvo field (--field, --x/--y inside it); a
-// milling machine has a stock and a travel instead, and its command checks those.
-void add_layout_options(CLI::App& app, LayoutArgs& args, bool galvo_field = true);
+// `font`: the font setting the command takes (peen's dot fonts have their own). `galvo_field`:
+// the text is marked in a square galvo field (--field, --x/--y inside it); a milling machine has
+// a stock and a travel instead, and its command checks those.
+void add_layout_options(CLI::App& app, LayoutArgs& args, const Text& font = kFont, bool galvo_field = true);
 // --char-spacing PCT, --word-spacing PCT (F-Engrave's spacing; the font's own without them).
 void add_spacing_options(CLI::App& app, LayoutArgs& args);
 void add_fill_options(CLI::App& app, LayoutArgs& args);

@@ -3,40 +3,28 @@
 #include "base/error.hpp"
 #include "driver/lmc/cor_file.hpp"
 #include "marker/cli/option_ranges.hpp"
+#include "marker/limits/device_settings.hpp"
 
 namespace mark::cli {
-namespace {
 
-const WholeRange kPortBitRange{0, 15};
-// Below 0.5 µm a chord is shorter than the board's 16-bit field step on any lens.
-const Range kChordToleranceRange{0.5, 1000, "µm"};
-
-}  // namespace
+// The table's defaults are EzCad's axes, as the driver names them.
+static_assert(kSwapXy.on == lmc::kEzCadAxes.swap_xy && kFlipX.on == lmc::kEzCadAxes.flip_x &&
+              kFlipY.on == lmc::kEzCadAxes.flip_y);
 
 void add_lmc_options(CLI::App& app, LmcArgs& a) {
-  app.add_option("--cor", a.cor_file, "LMC: EzCad field-correction file (.cor, both formats) to upload");
-  app.add_flag("--swap-xy,!--no-swap-xy", a.swap_xy,
-               "LMC: the first coordinate word is y (EzCad's default, on); --no-swap-xy: it is x")
-      ->capture_default_str();
-  app.add_flag("--flip-x", a.flip_x, "LMC: mirror x (the head's x galvo is wired reversed)");
-  app.add_flag("--flip-y", a.flip_y, "LMC: mirror y");
-  add_ranged_option(app, "--laser-bit", a.laser_bit, "LMC: output-port bit that enables the laser", kPortBitRange)
-      ->capture_default_str();
-  add_ranged_option(app, "--red-bit", a.red_bit, "LMC: output-port bit of the red pointer", kPortBitRange)
-      ->capture_default_str();
-  app.add_option("--polygon-delay-units", a.polygon_unit,
-                 "LMC: PolygonDelay encoding: us (galvoplotter, balor) or 10us (meerk40t since 2025); "
-                 "`marker lmc probe` measures which a board takes")
-      ->check(CLI::IsMember({"10us", "us"}))
-      ->capture_default_str();
-  add_ranged_option(app, "--chord-tolerance", a.chord_tolerance_um,
-                    "LMC: arcs become chords within this distance, µm", kChordToleranceRange)
-      ->capture_default_str();
+  add_setting(app, kCorrectionFile, a.cor_file);
+  add_setting(app, kSwapXy, a.swap_xy);
+  add_setting(app, kFlipX, a.flip_x);
+  add_setting(app, kFlipY, a.flip_y);
+  add_setting(app, kLaserBit, a.laser_bit);
+  add_setting(app, kRedBit, a.red_bit);
+  add_setting(app, kPolygonDelayUnits, a.polygon_unit);
+  add_setting(app, kChordTolerance, a.chord_tolerance_um);
 }
 
 lmc::LmcOptions to_lmc_options(const LmcArgs& a, double field_mm) {
   if (!(field_mm > 0)) throw InputError("--field must be a positive size in mm");
-  check_range("--chord-tolerance", a.chord_tolerance_um, kChordToleranceRange);
+  check_setting(kChordTolerance, a.chord_tolerance_um);
   if (a.laser_bit == a.red_bit) throw InputError("--laser-bit and --red-bit must differ");
   lmc::LmcOptions o;
   o.field_mm = field_mm;

@@ -7,16 +7,18 @@
 #include <string>
 
 #include "driver/lmc/lmc_device.hpp"
+#include "marker/limits/device_settings.hpp"
 
 namespace mark::cli {
 
 struct LmcArgs {
+  // Defaults from the settings table (marker/limits/device_settings.hpp).
   std::string cor_file;
-  bool swap_xy = lmc::kEzCadAxes.swap_xy, flip_x = lmc::kEzCadAxes.flip_x, flip_y = lmc::kEzCadAxes.flip_y;
-  int laser_bit = 0;
-  int red_bit = 8;
-  std::string polygon_unit = "us";
-  double chord_tolerance_um = 5;
+  bool swap_xy = kSwapXy.on, flip_x = kFlipX.on, flip_y = kFlipY.on;
+  int laser_bit = static_cast<int>(*kLaserBit.value);
+  int red_bit = static_cast<int>(*kRedBit.value);
+  std::string polygon_unit{kPolygonDelayUnits.value};
+  double chord_tolerance_um = *kChordTolerance.value;
 };
 
 void add_lmc_options(CLI::App& app, LmcArgs& args);

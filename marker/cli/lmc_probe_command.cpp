@@ -15,20 +15,23 @@
 #include "driver/lmc/probe.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/option_ranges.hpp"
-#include "marker/limits/layout_limits.hpp"
+#include "marker/limits/device_settings.hpp"
+#include "marker/limits/head_settings.hpp"
+#include "marker/limits/pen_settings.hpp"
 #include "marker/output/output_file.hpp"
 
 namespace mark::cli {
 namespace {
 
 struct ProbeArgs {
-  std::string device = "lmc";
+  // The defaults are the settings tables' (add_setting sets them).
+  std::string device;
   std::string output;
   bool json = false;
-  double field_mm = 110;
-  std::string source = "fiber";
-  int laser_bit = 0, red_bit = 8;
-  std::string polygon_unit = "us";
+  double field_mm = 0;
+  std::string source;
+  int laser_bit = 0, red_bit = 0;
+  std::string polygon_unit;
 };
 
 nlohmann::ordered_json report_json(const std::string& device, const lmc::ProbeReport& r) {
@@ -113,23 +116,14 @@ Command make_lmc_command() {
         auto* p = lmc->add_subcommand(
             "probe", "first contact with a board: serial, version, and what it does that the open drivers leave open "
                      "(laser masked off, red pointer only; docs/lmc.md)");
-        p->add_option("--device", a->device, "lmc, lmc:SERIAL (see 'marker devices') or lmc-emulated[:VARIANT]")
-            ->capture_default_str();
+        add_setting(*p, kProbeDevice, a->device);
         p->add_flag("--json", a->json, "print the report as one JSON object (docs/json.md)");
         p->add_option("-o,--output", a->output, "also write the report to this file (.json)");
-        add_ranged_option(*p, "--field", a->field_mm, "the lens field, mm", kFieldRange)->capture_default_str();
-        p->add_option("--source", a->source, "the laser source, for the words of the timed job list (sent at 0 %)")
-            ->check(CLI::IsMember({"fiber", "mopa", "co2", "uv"}))
-            ->capture_default_str();
-        add_ranged_option(*p, "--laser-bit", a->laser_bit, "output-port bit that enables the laser (masked off)",
-                          WholeRange{0, 15})
-            ->capture_default_str();
-        add_ranged_option(*p, "--red-bit", a->red_bit, "output-port bit of the red pointer", WholeRange{0, 15})
-            ->capture_default_str();
-        p->add_option("--polygon-delay-units", a->polygon_unit,
-                      "PolygonDelay encoding for the job list's estimate: us or 10us")
-            ->check(CLI::IsMember({"10us", "us"}))
-            ->capture_default_str();
+        add_setting(*p, kField, a->field_mm);
+        add_setting(*p, kLaserSource, a->source);
+        add_setting(*p, kLaserBit, a->laser_bit);
+        add_setting(*p, kRedBit, a->red_bit);
+        add_setting(*p, kPolygonDelayUnits, a->polygon_unit);
         return lmc;
       },
       [a] { return run_probe(*a); });

@@ -12,6 +12,7 @@
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/production_options.hpp"
+#include "marker/limits/production_settings.hpp"
 #include "marker/store/audit_format.hpp"
 #include "marker/store/open_store.hpp"
 #include "marker/store/utc_time.hpp"
@@ -80,10 +81,10 @@ Command make_log_command() {
       [a](CLI::App& app) {
         auto* sub = app.add_subcommand("log", "print the audit log of the serial store (read-only)");
         add_store_options(*sub, a->store, false);
-        add_ranged_option(*sub, "--limit", a->limit, "only the last N rows that match", kLogLimitRange);
-        sub->add_option("--since", a->since, "rows from this UTC time on: 2026-03-05, 2026-03-05T06:00, or back from now: 90m, 12h, 7d");
-        sub->add_option("--serial", a->serial, "rows that consumed this value: VALUE or COUNTER=VALUE (and their re-marks)");
-        sub->add_option("--text", a->text, "rows that marked exactly this text in an object with a serial field (and their re-marks)");
+        add_setting(*sub, kLogLimit, a->limit);
+        add_setting(*sub, kSince, a->since);
+        add_setting(*sub, kLogSerial, a->serial);
+        add_setting(*sub, kLogText, a->text);
         sub->add_option("--job", a->job, "rows marked with this job file (its path as the mark was given it)");
         auto* json = sub->add_flag("--json", a->json, "JSON Lines: one object per row");
         auto* csv = sub->add_flag("--csv", a->csv, "CSV with a header row");

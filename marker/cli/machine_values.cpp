@@ -5,7 +5,7 @@
 
 #include "marker/cli/option_values.hpp"
 #include "marker/limits/cnc_limits.hpp"
-#include "marker/limits/layout_limits.hpp"
+#include "marker/limits/layout_settings.hpp"
 
 namespace mark::cli {
 
@@ -17,8 +17,8 @@ Box parse_stock(const std::string& text) {
   const double x = v.size() == 4 ? v[0] : 0, y = v.size() == 4 ? v[1] : 0;
   const double w = v[v.size() - 2], h = v[v.size() - 1];
   if (v.size() == 4) {
-    check_range(option + " corner x", x, kPositionRange);
-    check_range(option + " corner y", y, kPositionRange);
+    check_range(option + " corner x", x, kPositionBounds.range());
+    check_range(option + " corner y", y, kPositionBounds.range());
   }
   check_range(option + " width", w, kStockSizeRange);
   check_range(option + " height", h, kStockSizeRange);

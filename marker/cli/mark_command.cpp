@@ -39,6 +39,7 @@
 #include "marker/cli/mark_job.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
+#include "marker/cli/output_options.hpp"
 #include "marker/cli/pen_options.hpp"
 #include "marker/codes/code_data.hpp"
 #include "marker/codes/code_json.hpp"
@@ -48,8 +49,11 @@
 #include "marker/job/job.hpp"
 #include "marker/job/job_json.hpp"
 #include "marker/job/sim_evaluator.hpp"
-#include "marker/limits/counter_limits.hpp"
-#include "marker/limits/pen_limits.hpp"
+#include "marker/limits/code_settings.hpp"
+#include "marker/limits/device_settings.hpp"
+#include "marker/limits/marking_settings.hpp"
+#include "marker/limits/pen_settings.hpp"
+#include "marker/limits/production_settings.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/preview/mark_preview.hpp"
 
@@ -59,11 +63,11 @@ namespace {
 struct MarkArgs {
   std::string text;
   LayoutArgs layout;
-  std::string device = "sim";
+  std::string device;
   HeadArgs head;
   PenArgs pen;
-  std::string order = "glyph";
-  std::string speed = "auto";  // mm/s, or auto: from the figure's tightest curve and the head
+  std::string order;
+  std::string speed;  // mm/s, or auto: from the figure's tightest curve and the head
   std::string preview;
   std::string dose_png;
   std::string trace;
@@ -71,7 +75,7 @@ struct MarkArgs {
   std::string require_quality;
   std::string require_grade;
   LaserSettings laser;
-  std::string source = "fiber";  // laser.source, as --source names it
+  std::string source{kLaserSource.value};  // laser.source, as --source names it
   LmcArgs lmc;
   std::string code;  // SYMBOLOGY:DATA
   CodeArgs code_args;
@@ -118,15 +122,12 @@ PreparedMark prepare_mark(const MarkArgs& a) {
   CompiledJob laid_out = lay_out_job(spec, kFieldRemedy);
   const double layout_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   double speed_mm_s = 0;
-  if (a.speed == "auto") {
+  if (a.speed == kAutoSpeed) {
     // The whole figure: filled letters' contour arcs and a code's dots count too.
     speed_mm_s = auto_mark_speed_mm_s(laid_out.figure, spec.head);
   } else {
-    const Range speeds = positive_up_to(spec.head.max_speed_mm_s, "mm/s (head " + spec.head.name + "'s positioning limit)");
-    const std::optional<double> v = parse_number(a.speed);
-    if (!v) throw InputError("--speed: '" + a.speed + "' is neither auto nor a number (range: " + speeds.text() + ")");
-    check_range("--speed", *v, speeds, a.speed);
-    speed_mm_s = *v;
+    // Checked here and only here: the range a job file's pen speed has on this head.
+    speed_mm_s = *number_or_word(kMarkSpeed, a.speed, kAutoSpeed, head_speed_range(kMarkSpeed, spec.head));
   }
   PenArgs pen = a.pen;
   pen.speed_mm_s = speed_mm_s;
@@ -284,6 +285,7 @@ int run_mark(const MarkArgs& a) {
   const JobSpec& spec = prepared.spec;
   for (const CodeObject& c : spec.codes) check_reader_choice(spec.verify.reading.reader, place_encoded(c), "--reader");
   // Every file the job writes is checked before anything is fired.
+  check_standard_output({{"--preview", &a.preview}, {"--dose-png", &a.dose_png}, {"--trace", &a.trace}}, a.json);
   if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
   if (!a.dose_png.empty()) check_output_path("--dose-png", a.dose_png, {".png"});
   if (!a.trace.empty()) check_output_path("--trace", a.trace);
@@ -421,24 +423,13 @@ Command make_mark_command() {
                         "text to mark (UTF-8; \\n starts a new line; may be \"\" with --code); or --job FILE");
         add_layout_options(*sub, a->layout);
         add_fill_options(*sub, a->layout);
-        sub->add_option("--code", a->code,
-                        "also mark a code: SYMBOLOGY:DATA (datamatrix, gs1-datamatrix, qr, code128, gs1-128); "
-                        "placed with the --code-… options, hatched with the --hatch-… options");
+        add_setting(*sub, kCodeData, a->code);
         add_code_options(*sub, a->code_args, "code-");
         add_verify_options(*sub, a->verify);
-        modes->shared.push_back(
-            sub->add_option("--device", a->device,
-                            "device: sim (the simulated scanner), lmc or lmc:SERIAL (a BJJCZ board, see "
-                            "'marker devices'), lmc-capture:FILE (the board's bytes to a file), "
-                            "lmc-emulated[:VARIANT] (the emulated board and the simulated scanner); with --job "
-                            "the job's unless given")
-                ->capture_default_str());
+        modes->shared.push_back(add_setting(*sub, kDevice, a->device));
         add_head_options(*sub, a->head, true);
-        sub->add_option("--order", a->order, "stroke order: glyph, shortest (least jumping)")->capture_default_str();
-        sub->add_option("--speed", a->speed,
-                        "marking speed, mm/s, or auto: the fastest (up to 1000 mm/s) at which the "
-                        "head's lag shrinks the tightest curve by at most 8 µm")
-            ->capture_default_str();
+        add_setting(*sub, kOrder, a->order);
+        add_setting(*sub, kMarkSpeed, a->speed, kAutoSpeed, kAutoSpeedHelp);
         add_pen_options(*sub, a->pen, false);
         sub->add_option("--preview", a->preview,
                         "write the marked result: dose under the planned path (.png or .svg)");
@@ -450,45 +441,26 @@ Command make_mark_command() {
             "--inject", a->inject,
             "fault injection: underrun@N, abort@N or fault@N (N: sample index; with --job in every "
             "object's device job)"));
-        sub->add_option("--require-quality", a->require_quality,
-                        "refuse to fire unless the simulator predicts this class: high, good");
-        sub->add_option("--require-grade", a->require_grade,
-                        "refuse to fire unless every code of the predicted mark grades at least A, B, C or D "
-                        "(ISO/IEC TR 29158)");
-        modes->shared.push_back(sub->add_flag("--virtual-time", a->virtual_time,
-                                              "drain as fast as the device accepts (device time is still reported)"));
+        add_setting(*sub, kRequireQuality, a->require_quality);
+        add_setting(*sub, kRequireGrade, a->require_grade);
+        modes->shared.push_back(add_setting(*sub, kVirtualTime, a->virtual_time));
         modes->shared.push_back(sub->add_flag(
             "--json", a->json, "print one JSON object with the job's figures (--job: one per part, JSON Lines)"));
         MarkJobArgs& p = a->production;
         modes->production = {
             sub->add_option("--job", p.job, "production run: mark the parts of this job file"),
-            sub->add_option("--set", p.sets, "--job: variable value NAME=VALUE (repeatable)"),
-            add_ranged_option(*sub, "--count", p.count, "--job: parts to mark, each with its next serial numbers",
-                              kPartCountRange)
-                ->capture_default_str(),
-            sub->add_option("--station", p.station, "--job: station name in the audit log (default: host name)"),
-            add_ranged_option(*sub, "--remark", p.remark,
-                              "--job: mark the part of audit row ID again (no number consumed)", kAuditRowRange),
-            sub->add_option("--reason", p.reason, "--job --remark: why the part is marked again (kept in the audit log)"),
-            sub->add_flag("--create-counters", p.create_counters,
-                          "--job: create the job's counters the store does not know, each at its start")};
+            add_setting(*sub, kSet, p.sets),
+            add_setting(*sub, kPartCount, p.count),
+            add_setting(*sub, kStation, p.station),
+            add_setting(*sub, kRemark, p.remark),
+            add_setting(*sub, kRemarkReason, p.reason),
+            add_setting(*sub, kCreateCounters, p.create_counters)};
         // --store, --store-wait-ms, --store-attempts: the production run's.
         const std::size_t before = sub->get_options().size();
         add_store_options(*sub, p.store, true);
         for (std::size_t i = before; i < sub->get_options().size(); ++i) modes->production.push_back(sub->get_options()[i]);
-        add_ranged_option(*sub, "--power", a->laser.power_pct, "laser power, % of the source", kPowerRange)
-            ->capture_default_str();
-        add_ranged_option(*sub, "--frequency", a->laser.frequency_khz, "pulse repetition rate (Q-switch), kHz",
-                          kFrequencyRange)
-            ->capture_default_str();
-        add_ranged_option(*sub, "--pulse-width", a->laser.pulse_width_ns,
-                          "MOPA pulse width, ns (0: the source's default; only --source mopa takes another)",
-                          kPulseWidthRange)
-            ->capture_default_str();
-        sub->add_option("--source", a->source,
-                        "laser source: fiber (Q-switched), mopa, co2, uv (docs/lmc.md: what each takes)")
-            ->check(CLI::IsMember({"fiber", "mopa", "co2", "uv"}))
-            ->capture_default_str();
+        add_laser_options(*sub, a->laser);
+        add_setting(*sub, kLaserSource, a->source);
         add_lmc_options(*sub, a->lmc);
         return sub;
       },

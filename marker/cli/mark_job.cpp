@@ -10,7 +10,7 @@
 #include "marker/cli/inject_option.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/production_options.hpp"
-#include "marker/limits/counter_limits.hpp"
+#include "marker/limits/production_settings.hpp"
 #include "marker/production/part_json.hpp"
 #include "marker/production/part_run.hpp"
 #include "marker/store/open_store.hpp"
@@ -116,8 +116,9 @@ void print_record(const PartResult& p, long long index) {
 
 int run_mark_job(const MarkJobArgs& a) {
   // The option's validator checks this on the command line; callers from code get the same words.
-  if (!kPartCountRange.contains(a.count))
-    throw InputError("--count: " + std::to_string(a.count) + " is outside the range " + kPartCountRange.text());
+  if (!kPartCount.range.contains(a.count))
+    throw InputError(std::string(kPartCount.name.flag) + ": " + std::to_string(a.count) + " is outside the range " +
+                     kPartCount.range.text());
   if (a.remark && (a.count != 1 || !a.sets.empty()))
     throw InputError("--remark " + std::to_string(*a.remark) +
                      " marks one part again with its recorded texts: --count and --set do not apply");

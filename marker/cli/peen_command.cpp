@@ -13,7 +13,9 @@
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
+#include "marker/cli/output_options.hpp"
 #include "marker/cli/print.hpp"
+#include "marker/limits/peen_settings.hpp"
 #include "marker/cli/print.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/peen/dot_fonts.hpp"
@@ -31,7 +33,7 @@ struct PeenArgs {
   std::string text;
   LayoutArgs layout;
   GantryArgs gantry;
-  std::string planner = "optimized";
+  std::string planner;
   std::string window;  // "WxH" in mm; empty: the dots' bounding box
   std::optional<double> pitch_mm;
   std::string preview;
@@ -125,6 +127,7 @@ void print_comparison(const nlohmann::json& rows) {
 }
 
 int run_peen(const PeenArgs& a) {
+  check_standard_output({{"--output", &a.output}, {"--preview", &a.preview}}, a.json);
   if (!a.output.empty()) check_output_path("--output", a.output, kPlanExtensions);
   if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
   ConsoleProgress progress = command_progress(a.quiet || a.json);
@@ -174,37 +177,26 @@ int run_peen(const PeenArgs& a) {
 
 Command make_peen_command() {
   auto a = std::make_shared<PeenArgs>();
-  a->layout.font = "5x7";
-  // Centred on the field: a pin marker's text sits in the middle of its window, and a 12-letter
-  // 5 mm line (60 mm) then fits the default field, which it does not starting at the centre.
-  a->layout.align = "center";
   return Command(
       [a](CLI::App& app) {
         auto* sub = app.add_subcommand(
             "peen", "plan a pin marker's needle path for the text and time it on the simulated gantry");
         sub->add_option("text", a->text, "text to mark (UTF-8; \\n starts a new line)")->required();
-        add_layout_options(*sub, a->layout);
-        sub->get_option("--font")->description(
-            "dot-matrix font 5x7, 7x9 or 10x16; or a stroke font ('builtin', an installed name, a "
-            ".jhf/.lff/.cxf file) marked as dots along its strokes");
-        sub->add_option("--planner", a->planner, "needle path planner")
-            ->check(CLI::IsMember({"snake", "block", "optimized"}))
-            ->capture_default_str();
-        sub->add_option("--window", a->window,
-                        "marking window WIDTHxHEIGHT in mm, centred on the field (default: the "
-                        "dots' bounding box); the whole-window snake sweeps all of it");
-        add_ranged_option(*sub, "--pitch", a->pitch_mm,
-                          "dot pitch along strokes for stroke fonts, mm (default: height / 10; at least " +
-                              format_number(kMinPitchSteps) + " motor steps, at most the height)",
-                          positive_up_to(10000, "mm"));
+        add_layout_options(*sub, a->layout, kDotFont);
+        // Centred on the field: a pin marker's text sits in the middle of its window, and a
+        // 12-letter 5 mm line (60 mm) then fits the default field, which it does not starting at
+        // the centre.
+        a->layout.align = "center";
+        add_setting(*sub, kPlanner, a->planner);
+        add_setting(*sub, kWindow, a->window);
+        add_setting(*sub, kPitch, a->pitch_mm);
         sub->add_flag("--compare", a->compare, "time all three planners side by side");
         sub->add_flag("--json", a->json, "print the result as JSON");
         sub->add_flag("--quiet", a->quiet, "no progress lines on stderr");
         sub->add_option("--preview", a->preview, "draw dots and needle path to FILE.svg or FILE.png");
         sub->add_option("-o,--output", a->output,
                         "write the plan as a move/strike list (FILE.csv) or G-code (FILE.ngc)");
-        sub->add_flag("--block-straight", a->block_straight,
-                      "let the block snake move both axes together (not the patent's track)");
+        add_setting(*sub, kBlockStraight, a->block_straight);
         add_gantry_options(*sub, a->gantry);
         return sub;
       },

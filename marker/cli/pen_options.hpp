@@ -8,17 +8,20 @@
 #include <optional>
 #include <string>
 
+#include "driver/device.hpp"
 #include "driver/sim/head_model.hpp"
 #include "marker/head/head_profile.hpp"
+#include "marker/limits/pen_settings.hpp"
 #include "marker/plan/pen.hpp"
 
 namespace mark::cli {
 
 struct PenArgs {
-  std::string corner = "blanking";
-  double speed_mm_s = 1000;
+  // Defaults from the settings table (marker/limits/pen_settings.hpp).
+  std::string corner{kCorner.value};
+  double speed_mm_s = *kMarkSpeed.value;
   std::optional<double> jump_speed_mm_s;
-  double tick_us = 10;
+  double tick_us = *kTick.value;
   std::string head_profile;  // the planner's model of the head (JSON); empty: datasheet values
   bool lookahead = false;
   bool feed_forward = false;
@@ -32,6 +35,8 @@ struct PenArgs {
 
 // `with_speed`: whether --speed is one of them (mark has its own, which also takes "auto").
 void add_pen_options(CLI::App& app, PenArgs& args, bool with_speed = true);
+// The laser source's settings: --power, --frequency, --pulse-width.
+void add_laser_options(CLI::App& app, LaserSettings& laser);
 
 // The planner's model: the profile file, or the head's datasheet profile.
 HeadProfile planner_profile(const PenArgs& args, const HeadModel& head);

@@ -5,6 +5,9 @@
 #include "marker/cli/commands.hpp"
 #include "marker/cli/console_progress.hpp"
 #include "marker/cli/layout_options.hpp"
+#include "marker/cli/option_ranges.hpp"
+#include "marker/cli/output_options.hpp"
+#include "marker/limits/marking_settings.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/preview/figure_preview.hpp"
 
@@ -27,12 +30,13 @@ Command make_preview_command() {
         add_layout_options(*sub, a->layout);
         add_fill_options(*sub, a->layout);
         sub->add_option("-o,--output", a->output, "output file, .svg or .png")->required();
-        sub->add_flag("--no-travel", a->no_travel, "leave out the dashed travel between strokes");
+        add_setting(*sub, kNoTravel, a->no_travel);
         sub->add_flag("--json", a->json, "print what was drawn as one JSON object (docs/json.md)");
         sub->add_flag("--quiet", a->quiet, "no progress lines on stderr");
         return sub;
       },
       [a] {
+        check_standard_output({{"--output", &a->output}}, a->json);
         check_output_path("--output", a->output, {".svg", ".png"});
         ConsoleProgress progress = command_progress(a->quiet || a->json);
         const LaidOutText laid = build_figure(a->text, a->layout);

@@ -7,6 +7,7 @@
 
 #include "base/error.hpp"
 #include "marker/cli/option_ranges.hpp"
+#include "marker/limits/production_settings.hpp"
 #include "marker/store/digest.hpp"
 #include "marker/store/open_store.hpp"
 
@@ -15,16 +16,8 @@ namespace mark::cli {
 CLI::Option* add_store_options(CLI::App& app, StoreArgs& a, bool marking) {
   CLI::Option* store = app.add_option(
       "--store", a.store, "serial store: SQLite file or postgresql://… (default: the station's, " + default_store_path() + ")");
-  add_ranged_option(app, "--store-wait-ms", a.wait_ms,
-                    "longest wait for a store another process holds locked (SQLite) or a row lock (PostgreSQL), ms",
-                    kStoreWaitMsRange)
-      ->capture_default_str();
-  if (marking)
-    add_ranged_option(app, "--store-attempts", a.attempts,
-                      "attempts of an allocation or an outcome write before giving up (the outcome stays in "
-                      "the station's journal)",
-                      kStoreAttemptsRange)
-        ->capture_default_str();
+  add_setting(app, kStoreWait, a.wait_ms);
+  if (marking) add_setting(app, kStoreAttempts, a.attempts);
   return store;
 }
 

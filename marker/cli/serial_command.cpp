@@ -15,7 +15,7 @@
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/production_options.hpp"
-#include "marker/limits/counter_limits.hpp"
+#include "marker/limits/production_settings.hpp"
 #include "marker/production/job_file.hpp"
 #include "marker/store/open_store.hpp"
 
@@ -146,20 +146,19 @@ Command make_serial_command() {
         };
         auto* create = serial->add_subcommand("create", "create a counter in the store (a job's counters must be created before it marks)");
         common(create);
-        add_ranged_option(*create, "--start", a->start, "its first value (default: the job's start, else 1)",
-                          kCounterValueRange);
-        create->add_option("--station", a->station, "station name for the audit log (default: host name)");
+        add_setting(*create, kCreateStart, a->start);
+        add_setting(*create, kStation, a->station);
         auto* show = serial->add_subcommand("show", "the counter's next value and highest issued value (read-only)");
         common(show);
         show->add_flag("--json", a->json, "print one JSON object (next, highest_issued)");
         auto* set = serial->add_subcommand("set", "make VALUE the counter's next value (never at or behind an issued one)");
         common(set);
-        add_ranged_option(*set, "value", a->value, "the next value", kCounterValueRange)->required();
-        set->add_option("--station", a->station, "station name for the audit log (default: host name)");
+        add_setting(*set, kSerialValue, a->value)->required();
+        add_setting(*set, kStation, a->station);
         auto* reserve = serial->add_subcommand("reserve", "issue COUNT values without marking");
         common(reserve);
-        add_ranged_option(*reserve, "count", a->count, "how many values", kReserveCountRange)->required();
-        reserve->add_option("--station", a->station, "station name for the audit log (default: host name)");
+        add_setting(*reserve, kReserveCount, a->count)->required();
+        add_setting(*reserve, kStation, a->station);
         reserve->add_flag("--json", a->json, "print the reserved values as JSON");
         *subs = {create, show, set, reserve};
         return serial;

@@ -12,7 +12,9 @@
 #include "base/error.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/interrupt.hpp"
+#include "marker/cli/option_ranges.hpp"
 #include "marker/cli/production_options.hpp"
+#include "marker/limits/production_settings.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/store/open_store.hpp"
 #include "marker/store/sqlite_backup.hpp"
@@ -81,7 +83,7 @@ Command make_store_command() {
         auto* p = store->add_subcommand("path", "where this station's store and outcome journals are");
         auto* c = store->add_subcommand("check", "check the store (read-only; exit 1 when damaged)");
         add_store_options(*c, a->store, false);
-        c->add_flag("--quick", a->quick, "PRAGMA quick_check only (what every station start runs)");
+        add_setting(*c, kQuickCheck, a->quick);
         c->add_flag("--json", a->json, "one JSON object: store, ok, problems");
         auto* b = store->add_subcommand("backup", "copy an SQLite store while stations mark (online backup)");
         b->add_option("file", a->target, "the copy to write (written whole or not at all)")->required();

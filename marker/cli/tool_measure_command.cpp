@@ -7,6 +7,7 @@
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/tool_measure_report.hpp"
 #include "marker/cnc/tool/tool_measure.hpp"
+#include "marker/limits/cnc_settings.hpp"
 
 namespace mark::cli {
 
@@ -22,15 +23,9 @@ Command make_tool_measure_command() {
       [a](CLI::App& app) {
         auto* sub = app.add_subcommand("tool-measure", "measure a cutter from a back-lit (shadow) image");
         sub->add_option("image", a->image, "PNG or PGM image of the tool seen along its axis")->required();
-        add_ranged_option(*sub, "--pixel-size", a->options.pixel_size_um, "micrometres per pixel at the tool",
-                          kPixelSizeRange)
-            ->required();
-        add_ranged_option(*sub, "--nominal-diameter", a->nominal_mm, "the diameter the toolpaths assume, mm",
-                          length_range(0.001, 1000));
-        add_ranged_option(*sub, "--tangential-angle", a->options.tangential_angle_deg,
-                          "scans more than this far from the edge normal are dropped, degrees (90 keeps all)",
-                          Range{0, 90, "degrees", true})
-            ->capture_default_str();
+        add_setting(*sub, kPixelSize, a->options.pixel_size_um)->required();
+        add_setting(*sub, kNominalDiameter, a->nominal_mm);
+        add_setting(*sub, kTangentialAngle, a->options.tangential_angle_deg);
         sub->add_flag("--json", a->json, "print the measurement as one JSON object (docs/json.md)");
         return sub;
       },

@@ -9,9 +9,6 @@
 
 namespace mark::cli {
 
-// Micrometres per pixel at the tool: from a microscope (0.01 µm) to a flatbed scan (10 mm).
-inline const Range kPixelSizeRange{0.01, 10000, "µm"};
-
 // Where the form deviation's angle is measured from (the same words in the text and in docs/).
 inline constexpr const char* kAngleConvention =
     "counter-clockwise from the image's +x axis (pointing right), y up";

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "base/error.hpp"
-#include "marker/limits/code_limits.hpp"
+#include "marker/limits/code_settings.hpp"
 
 namespace mark {
 namespace {
@@ -156,15 +156,15 @@ std::vector<Element> line_marks(const PlacedCode& code, FillStats& stats) {
 }
 
 void check_layout(const CodeLayout& l, const ModuleMatrix& m) {
-  check_range("code x", l.center.x(), kCodePositionRange);
-  check_range("code y", l.center.y(), kCodePositionRange);
-  check_range("code angle", l.angle_deg, kCodeAngleRange);
+  check_range("code x", l.center.x(), kCodeX.range());
+  check_range("code y", l.center.y(), kCodeY.range());
+  check_range("code angle", l.angle_deg, kCodeAngle.range());
   if (l.module_mm != 0 && l.size_mm != 0)
     throw InputError("give the module size or the code size, not both");
-  if (l.module_mm != 0) check_range("module size", l.module_mm, kModuleRange);
-  if (l.size_mm != 0) check_range("code size", l.size_mm, kCodeSizeRange);
-  if (l.bar_height_mm != 0) check_range("bar height", l.bar_height_mm, kBarHeightRange);
-  check_range("dot size", l.dot_share, kDotShareRange);
+  if (l.module_mm != 0) check_range("module size", l.module_mm, kModule.range());
+  if (l.size_mm != 0) check_range("code size", l.size_mm, kCodeSize.range());
+  if (l.bar_height_mm != 0) check_range("bar height", l.bar_height_mm, kBarHeight.range());
+  check_range("dot size", l.dot_share, kDotSize.range());
   check_fill_options(l.fill);
   if (l.style == ModuleStyle::dot && is_linear(m.symbology))
     throw InputError("dot style is for 2-D codes; mark " + std::string(to_string(m.symbology)) +
@@ -230,7 +230,7 @@ PlacedCode place_code(const ModuleMatrix& matrix, const CodeLayout& layout) {
   code.module_mm = layout.module_mm > 0 ? layout.module_mm
                    : layout.size_mm > 0 ? layout.size_mm / matrix.cols
                                         : kDefaultModule_mm;
-  check_range("module size", code.module_mm, kModuleRange);
+  check_range("module size", code.module_mm, kModule.range());
   code.quiet_modules = quiet_zone_modules(matrix.symbology);
   code.width_mm = matrix.cols * code.module_mm;
   code.height_mm = is_linear(matrix.symbology)

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "base/error.hpp"
-#include "marker/limits/fill_limits.hpp"
+#include "marker/limits/fill_settings.hpp"
 
 namespace mark {
 namespace {
@@ -56,17 +56,17 @@ void check_fill_options(const FillOptions& o) {
     throw InputError("fill: " + std::to_string(o.sets.size()) + " hatch sets, at most " +
                      std::to_string(kHatchSetsRange.max));
   for (const HatchSet& s : o.sets) {
-    check_range("hatch spacing", s.spacing_mm, kHatchSpacingRange);
-    check_range("hatch angle", s.angle_deg, kHatchAngleRange);
+    check_range("hatch spacing", s.spacing_mm, kHatchSpacing.range());
+    check_range("hatch angle", s.angle_deg, kHatchAngle.range());
   }
-  check_range("hatch inset", o.inset_mm, kFillInsetRange);
-  if (!kContourPassesRange.contains(o.contour_passes))
+  check_range("hatch inset", o.inset_mm, kHatchInset.range());
+  if (!kContourPasses.range.contains(o.contour_passes))
     throw InputError("contour passes: " + std::to_string(o.contour_passes) + " is outside the range " +
-                     kContourPassesRange.text());
-  check_range("contour inset", o.contour_inset_mm, kFillInsetRange);
-  check_range("contour spacing", o.contour_spacing_mm, kHatchSpacingRange);
-  check_range("minimum hatch line", o.min_line_mm, kMinHatchLineRange);
-  check_range("fill chord tolerance", o.chord_tolerance_mm, kFillChordRange);
+                     kContourPasses.range.text());
+  check_range("contour inset", o.contour_inset_mm, kContourInset.range());
+  check_range("contour spacing", o.contour_spacing_mm, kContourSpacing.range());
+  check_range("minimum hatch line", o.min_line_mm, kMinHatchLineBounds.range());
+  check_range("fill chord tolerance", o.chord_tolerance_mm, kFillChordBounds.range());
   if (!std::isfinite(o.origin.x()) || !std::isfinite(o.origin.y()))
     throw InputError("hatch origin is not a finite point");
 }

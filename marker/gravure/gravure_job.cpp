@@ -10,8 +10,7 @@
 
 #include "marker/gravure/head_design.hpp"
 #include "marker/gravure/image_cells.hpp"
-#include "marker/limits/gravure_limits.hpp"
-#include "marker/limits/value_range.hpp"
+#include "marker/limits/gravure_settings.hpp"
 
 namespace mark {
 namespace {
@@ -74,7 +73,7 @@ GravureReport run_gravure_job(const GravureJobSpec& spec) {
   GravureReport report;
   validate(spec.setup);
   validate(spec.screen);
-  check_range("stylus angle", spec.stylus_angle_deg, kStylusAngleRange);
+  check_range("stylus angle", spec.stylus_angle_deg, kStylusAngle.range());
   report.px_per_mm = spec.px_per_mm > 0 ? spec.px_per_mm : 4 * spec.screen.cells_per_mm_along;
   ImageCells cells(spec.image, spec.mask ? &*spec.mask : nullptr, spec.screen, report.px_per_mm);
   report.width_mm = cells.width_mm();

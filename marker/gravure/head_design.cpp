@@ -7,7 +7,7 @@
 #include <unsupported/Eigen/Polynomials>
 
 #include "base/error.hpp"
-#include "marker/limits/gravure_limits.hpp"
+#include "marker/limits/gravure_settings.hpp"
 
 namespace mark {
 namespace {
@@ -70,7 +70,7 @@ std::vector<ZeroPair> antiresonances(const StylusHeadModel& head) {
 
 FilterBank design_for_head(const StylusHeadModel& head, const TargetResponse& t) {
   validate(head);
-  check_range("target corner frequency", t.corner_hz, kTargetCornerRange);
+  check_range("target corner frequency", t.corner_hz, kTargetCorner.range());
   check_range("target damping", t.damping, {0.3, 2, ""});
   check_range("replacement damping", t.replacement_damping, {0.3, 2, ""});
   std::vector<StylusMode> modes = head.modes;

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "base/error.hpp"
-#include "marker/limits/gravure_limits.hpp"
+#include "marker/limits/gravure_settings.hpp"
 
 namespace mark {
 namespace {
@@ -32,7 +32,7 @@ void band_prefix(const GrayImage& img, double y0, double y1, std::vector<double>
 ImageCells::ImageCells(const GrayImage& image, const GrayImage* mask, const GravureScreen& screen, double px_per_mm)
     : image_(image), mask_(mask), screen_(screen), px_per_mm_(px_per_mm) {
   validate(screen_);
-  check_range("image resolution", px_per_mm_, kResolutionRange);
+  check_range("image resolution", px_per_mm_, kResolutionBounds.range());
   if (image.width < 1 || image.height < 1) throw InputError("gravure image: empty image");
   if (mask_ && (mask_->width != image.width || mask_->height != image.height))
     throw InputError("line-work mask is " + std::to_string(mask_->width) + "x" + std::to_string(mask_->height) +

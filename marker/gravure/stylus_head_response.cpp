@@ -6,7 +6,7 @@
 
 #include "base/error.hpp"
 #include "driver/sim/stylus_head_model.hpp"
-#include "marker/limits/gravure_limits.hpp"
+#include "marker/limits/gravure_settings.hpp"
 
 namespace mark {
 

@@ -6,7 +6,7 @@
 
 #include "driver/sim/stylus_cells.hpp"
 #include "driver/sim/stylus_head_model.hpp"
-#include "marker/limits/gravure_limits.hpp"
+#include "marker/limits/gravure_settings.hpp"
 
 namespace mark {
 namespace {
@@ -27,7 +27,7 @@ CellPosition cell_position(std::uint64_t sample, std::uint32_t rate) {
 StylusToolpath::StylusToolpath(CellSource& cells, const ToolpathOptions& options)
     : source_(cells), options_(options), cells_(cells.cells()), batch_(kBatch) {
   validate(options_.setup);
-  check_range("cell rate", options_.cell_rate_hz, kCellRateRange);
+  check_range("cell rate", options_.cell_rate_hz, kCellRateBounds.range());
   total_samples_ = first_sample_of_cell(cells_, options_.cell_rate_hz);
   x_per_sample_ = options_.cell_rate_hz / kStylusRate_hz;
   segment_.x1 = -std::numeric_limits<double>::infinity();  // fetch a piece for the first sample

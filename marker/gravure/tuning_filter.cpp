@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "marker/limits/gravure_limits.hpp"
+#include "marker/limits/gravure_settings.hpp"
 
 namespace mark {
 
@@ -35,10 +35,10 @@ FilterSection emphasis_section(double freq_hz, double damping, double corner_hz,
 
 void validate(const FilterSection& s, std::size_t index) {
   const std::string at = "filter section " + std::to_string(index + 1) + " (" + std::string(to_string(s.kind)) + ")";
-  check_range(at + " zero frequency", s.zero_hz, kFilterFrequencyRange);
-  check_range(at + " pole frequency", s.pole_hz, kFilterFrequencyRange);
-  check_range(at + " zero damping", s.zero_damping, kZeroDampingRange);
-  check_range(at + " pole damping", s.pole_damping, kPoleDampingRange);
+  check_range(at + " zero frequency", s.zero_hz, kFilterFrequencyBounds.range());
+  check_range(at + " pole frequency", s.pole_hz, kFilterFrequencyBounds.range());
+  check_range(at + " zero damping", s.zero_damping, kZeroDampingBounds.range());
+  check_range(at + " pole damping", s.pole_damping, kPoleDampingBounds.range());
 }
 
 BiquadCoefficients design(const FilterSection& s, double tick_s) {

@@ -1,6 +1,16 @@
 #include "marker/job/head_pen.hpp"
 
+#include "marker/limits/pen_settings.hpp"
+
 namespace mark {
+
+Range head_speed_range(const Quantity& speed, const HeadModel& head) {
+  return limited_range(speed, head.max_speed_mm_s, "head " + head.name + "'s positioning limit");
+}
+
+Range head_tick_range(const HeadModel& head) {
+  return limited_range(kTick, head.max_tick_s() * 1e6, "20 % of head " + head.name + "'s τ");
+}
 
 HeadDynamics dynamics_of(const HeadProfile& profile) {
   return {profile.lag_s(), profile.inertia_s2(), profile.max_accel_mm_s2};

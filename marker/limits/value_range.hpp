@@ -1,8 +1,9 @@
 #pragma once
 // The allowed range of a number a user gives — on the command line or in a job file — and its
-// wording in messages and help. One definition per quantity (layout_limits.hpp, pen_limits.hpp,
-// counter_limits.hpp), so `--height` and a job file's `height_mm` accept the same values and say
-// so in the same words.
+// wording in messages and help. A setting's range is declared once, in its settings table
+// (setting.hpp, *_settings.hpp), so `--height` and a job file's `height_mm` accept the same values
+// and say so in the same words; the values inside one option (--camera's keys, --stock's sizes)
+// keep their ranges in *_limits.hpp beside them.
 #include <cstdint>
 #include <string>
 #include <string_view>

@@ -9,9 +9,10 @@
 #include "driver/device_error.hpp"
 #include "driver/lmc/lmc_spec.hpp"
 #include "marker/job/head_pen.hpp"
-#include "marker/limits/counter_limits.hpp"
-#include "marker/limits/layout_limits.hpp"
-#include "marker/limits/pen_limits.hpp"
+#include "marker/limits/device_settings.hpp"
+#include "marker/limits/head_settings.hpp"
+#include "marker/limits/pen_settings.hpp"
+#include "marker/limits/production_settings.hpp"
 #include "marker/production/job_parse_context.hpp"
 #include "marker/production/json_reader.hpp"
 #include "marker/vars/data_list.hpp"
@@ -66,15 +67,15 @@ nlohmann::json parse_strict(std::string_view text, const std::string& file) {
 }
 
 HeadModel parse_head(JsonReader& top) {
-  const nlohmann::json* h = top.raw("head");
-  std::string model = "SL10";
+  const nlohmann::json* h = top.raw(kHead.name.key);
+  std::string model{kHead.value};
   std::optional<double> spot_um;
   if (h && h->is_string()) {
     model = h->get<std::string>();
   } else if (h) {
-    JsonReader head = top.object("head");
+    JsonReader head = top.object(kHead.name.key);
     model = head.string("model").value_or(model);
-    spot_um = head.number("spot_diameter_um", kSpotRange);
+    spot_um = head.number(kSpot);
     head.finish();
   }
   const auto found = find_head(model);
@@ -91,25 +92,26 @@ HeadModel parse_head(JsonReader& top) {
 CounterSpec parse_counter(JsonReader c, const std::string& name, const TimeZone& job_zone) {
   CounterSpec s;
   s.name = name;
-  s.start = c.integer("start", kCounterValueRange).value_or(1);
-  s.step = c.integer("step", kCounterStepRange).value_or(1);
-  s.limit = c.integer("limit", kCounterValueRange);
-  if (auto p = c.choice("at_limit", {"stop", "wrap"})) s.at_limit = *parse_end_policy(*p);
-  s.marks_per_serial = c.integer("marks_per_serial", kMarksPerSerialRange).value_or(1);
-  s.width = static_cast<int>(c.integer("width", kCounterWidthRange).value_or(0));
-  if (auto p = c.choice("padding", {"keep", "suppress", "blank"})) s.padding = *parse_padding(*p);
-  const std::optional<std::string> alphabet = c.choice("alphabet", {"decimal", "hex", "base36", "base33"});
-  const std::optional<std::string> digits = c.string("digits");
-  if (alphabet && digits) c.fail("digits", "give either \"alphabet\" or custom \"digits\", not both");
+  s.start = c.integer(kCounterStart).value_or(kCounterStart.fallback());
+  s.step = c.integer(kCounterStep).value_or(kCounterStep.fallback());
+  s.limit = c.integer(kCounterLimit);
+  if (auto p = c.choice(kAtLimit)) s.at_limit = *parse_end_policy(*p);
+  s.marks_per_serial = c.integer(kMarksPerSerial).value_or(kMarksPerSerial.fallback());
+  s.width = static_cast<int>(c.integer(kCounterWidth).value_or(kCounterWidth.fallback()));
+  if (auto p = c.choice(kPadding)) s.padding = *parse_padding(*p);
+  const std::optional<std::string> alphabet = c.choice(kAlphabet);
+  const std::optional<std::string> digits = c.string(kDigits);
+  if (alphabet && digits)
+    c.fail(kDigits.name.key, "give either \"alphabet\" or custom \"digits\", not both");
   if (alphabet) s.alphabet = *Alphabet::named(*alphabet);
-  if (digits) s.alphabet = Alphabet::custom(*digits, c.file() + ": " + c.path_of("digits"));
-  if (auto r = c.choice("reset", {"never", "midnight", "shift"})) s.reset = *parse_reset_rule(*r);
+  if (digits) s.alphabet = Alphabet::custom(*digits, c.file() + ": " + c.path_of(kDigits.name.key));
+  if (auto r = c.choice(kReset)) s.reset = *parse_reset_rule(*r);
   s.time_zone = job_zone;
-  if (auto z = c.string("time_zone")) {
+  if (auto z = c.string(kCounterTimeZone)) {
     try {
       s.time_zone = TimeZone::named(*z);
     } catch (const InputError& e) {
-      c.fail("time_zone", e.what());
+      c.fail(kCounterTimeZone.name.key, e.what());
     }
   }
   c.finish();
@@ -124,39 +126,40 @@ CounterSpec parse_counter(JsonReader c, const std::string& name, const TimeZone&
 JobPen parse_pen(JsonReader p, const std::string& name, const HeadModel& head) {
   JobPen pen;
   pen.name = name;
-  CornerStrategy corner = CornerStrategy::blanking;
-  if (auto c = p.choice("corner", {"blanking", "delays", "none"})) corner = parse_corner_strategy(*c);
-  const double speed = p.number("speed_mm_s", 0.001, head.max_speed_mm_s, "mm/s").value_or(1000);
-  const double tick_us = p.number("tick_us", 1, head.max_tick_s() * 1e6, "µs").value_or(10);
+  const CornerStrategy corner = parse_corner_strategy(p.choice(kCorner).value_or(std::string(kCorner.value)));
+  // The speeds and the tick within the head's limits, in the command line's words.
+  const double speed = p.number(kMarkSpeed, head_speed_range(kMarkSpeed, head)).value_or(kMarkSpeed.fallback());
+  const double tick_us = p.number(kTick, head_tick_range(head)).value_or(kTick.fallback());
   Pen& m = pen.motion;
   m = pen_for_head(head, corner, speed, tick_us * 1e-6);
-  m.jump_speed_mm_s = p.number("jump_speed_mm_s", 0.001, head.max_speed_mm_s, "mm/s").value_or(m.jump_speed_mm_s);
+  m.jump_speed_mm_s = p.number(kJumpSpeed, head_speed_range(kJumpSpeed, head)).value_or(m.jump_speed_mm_s);
   if (corner == CornerStrategy::blanking) m.join_speed_mm_s = m.jump_speed_mm_s;
-  auto us = [&](const char* key, double& field) {
-    if (auto v = p.number(key, 0, 1e6, "µs")) field = *v * 1e-6;
+  // Each given value replaces the head's default, scaled from the key's unit.
+  const auto set = [&](const Quantity& s, double& field, double scale) {
+    if (auto v = p.number(s)) field = *v * scale;
   };
-  us("laser_on_delay_us", m.laser_on_delay_s);
-  us("laser_off_delay_us", m.laser_off_delay_s);
-  us("jump_delay_us", m.jump_delay_s);
-  us("mark_delay_us", m.mark_delay_s);
-  us("polygon_delay_us", m.polygon_delay_s);
-  if (auto v = p.number("jump_settle_um", 0, 1e6, "µm")) m.jump_settle_mm = *v * 1e-3;
-  m.blank_angle_deg = p.number("blank_angle_deg", 0, 180, "°").value_or(m.blank_angle_deg);
-  if (auto v = p.number("run_in_mm", kExtensionRange)) m.run_in_mm = *v;
-  m.min_run_in_mm = p.number("min_run_in_mm", kExtensionRange).value_or(m.min_run_in_mm);
-  m.run_out_mm = p.number("run_out_mm", kExtensionRange).value_or(m.run_out_mm);
-  if (auto v = p.number("settle_um", 0.001, 1000, "µm")) m.settle_mm = *v * 1e-3;
-  m.join_speed_mm_s = p.number("join_speed_mm_s", 0.001, head.max_speed_mm_s, "mm/s").value_or(m.join_speed_mm_s);
-  pen.laser.power_pct = p.number("power_pct", kPowerRange).value_or(pen.laser.power_pct);
-  pen.laser.frequency_khz = p.number("frequency_khz", kFrequencyRange).value_or(pen.laser.frequency_khz);
-  pen.laser.pulse_width_ns = p.number("pulse_width_ns", kPulseWidthRange).value_or(pen.laser.pulse_width_ns);
-  if (auto src = p.choice("source", {"fiber", "mopa", "co2", "uv"})) pen.laser.source = *parse_laser_source(*src);
+  set(kLaserOnDelay, m.laser_on_delay_s, 1e-6);
+  set(kLaserOffDelay, m.laser_off_delay_s, 1e-6);
+  set(kJumpDelay, m.jump_delay_s, 1e-6);
+  set(kMarkDelay, m.mark_delay_s, 1e-6);
+  set(kPolygonDelay, m.polygon_delay_s, 1e-6);
+  set(kJumpSettle, m.jump_settle_mm, 1e-3);
+  set(kBlankAngle, m.blank_angle_deg, 1);
+  if (auto v = p.number(kRunIn)) m.run_in_mm = *v;
+  set(kMinRunIn, m.min_run_in_mm, 1);
+  set(kRunOut, m.run_out_mm, 1);
+  set(kSettle, m.settle_mm, 1e-3);
+  if (auto v = p.number(kJoinSpeed, head_speed_range(kJoinSpeed, head))) m.join_speed_mm_s = *v;
+  pen.laser.power_pct = p.number_or_default(kPower);
+  pen.laser.frequency_khz = p.number_or_default(kFrequency);
+  pen.laser.pulse_width_ns = p.number_or_default(kPulseWidth);
+  if (auto src = p.choice(kLaserSource)) pen.laser.source = *parse_laser_source(*src);
   try {
     check_laser_settings(pen.laser);  // what the pen's source cannot take (a CO2 pulse width)
   } catch (const InputError& e) {
     p.fail_here(e.what());
   }
-  pen.passes = static_cast<int>(p.integer("passes", kPassesRange).value_or(1));
+  pen.passes = static_cast<int>(p.integer(kPasses).value_or(kPasses.fallback()));
   p.finish();
   return pen;
 }
@@ -170,14 +173,14 @@ void check_name(JsonReader& r, std::string_view key, const std::string& name, co
 
 // "sim", or a board as --device names it: a station's job says which device it marks on.
 std::string parse_device(JsonReader& top) {
-  const std::optional<std::string> device = top.string("device");
+  const std::optional<std::string> device = top.string(kDevice);
   if (!device || *device == "sim") return "sim";
   try {
     if (lmc::parse_lmc_spec(*device, "")) return *device;
   } catch (const DeviceError& e) {
-    top.fail("device", e.what());
+    top.fail(kDevice.name.key, e.what());
   }
-  top.fail("device", "'" + *device + "' is not a device (sim: the simulated scanner; lmc, "
+  top.fail(kDevice.name.key, "'" + *device + "' is not a device (sim: the simulated scanner; lmc, "
                      "lmc:SERIAL, lmc-capture:FILE: a BJJCZ LMC board; lmc-emulated[:VARIANT]: the "
                      "emulated board)");
 }
@@ -212,16 +215,16 @@ JobFile parse_job(std::string_view text, const std::string& source) {
   job.job_name = top.string("name").value_or(std::filesystem::path(source).stem().string());
   job.device = parse_device(top);
   job.head = parse_head(top);
-  job.head.field_mm = top.number("field_mm", kFieldRange).value_or(job.head.field_mm);
-  if (auto z = top.string("time_zone")) {
+  job.head.field_mm = top.number(kField).value_or(job.head.field_mm);
+  if (auto z = top.string(kTimeZone)) {
     try {
       job.time_zone = TimeZone::named(*z);
     } catch (const InputError& e) {
-      top.fail("time_zone", e.what());
+      top.fail(kTimeZone.name.key, e.what());
     }
   }
-  if (const nlohmann::json* shifts = top.raw("shifts")) {
-    if (!shifts->is_array()) top.fail("shifts", "expected a list of {\"code\": …, \"start\": \"HH:MM\"}");
+  if (const nlohmann::json* shifts = top.raw(kShifts.name.key)) {
+    if (!shifts->is_array()) top.fail(kShifts.name.key, "expected a list of {\"code\": …, \"start\": \"HH:MM\"}");
     std::vector<Shift> list;
     for (std::size_t i = 0; i < shifts->size(); ++i) {
       JsonReader s((*shifts)[i], source, json_index("shifts", i));
@@ -240,9 +243,9 @@ JobFile parse_job(std::string_view text, const std::string& source) {
       top.fail("shifts", e.what());
     }
   }
-  if (top.has("variables")) {
-    JsonReader vars = top.object("variables");
-    for (const auto& [k, v] : top.raw("variables")->items()) {
+  if (top.has(kVariables.name.key)) {
+    JsonReader vars = top.object(kVariables.name.key);
+    for (const auto& [k, v] : top.raw(kVariables.name.key)->items()) {
       const std::optional<std::string> value = vars.string(k);
       check_name(vars, k, k, "variable");
       job.variables[k] = *value;
@@ -288,18 +291,19 @@ JobFile parse_job(std::string_view text, const std::string& source) {
   for (std::size_t i = 0; i < objects->size(); ++i) {
     JsonReader o((*objects)[i], source, json_index("objects", i));
     JobObject obj;
-    obj.name = o.string("name").value_or("");
-    check_name(o, "name", obj.name, "object");
-    if (!names.insert(obj.name).second) o.fail("name", "another object is called \"" + obj.name + "\"");
+    const std::string_view name_key = kObjectName.name.key, pen_key = kObjectPen.name.key;
+    obj.name = o.string(kObjectName).value_or("");
+    check_name(o, name_key, obj.name, "object");
+    if (!names.insert(obj.name).second) o.fail(name_key, "another object is called \"" + obj.name + "\"");
     obj.kind = o.string("kind").value_or("text");
-    const std::optional<std::string> pen = o.string("pen");
+    const std::optional<std::string> pen = o.string(kObjectPen);
     if (pen) {
-      if (!job.pens.count(*pen)) o.fail("pen", "no pen named \"" + *pen + "\"");
+      if (!job.pens.count(*pen)) o.fail(pen_key, "no pen named \"" + *pen + "\"");
       obj.pen = *pen;
     } else if (job.pens.size() == 1) {
       obj.pen = job.pens.begin()->first;
     } else {
-      o.fail("pen", "missing: the job has several pens, say which one draws this object");
+      o.fail(pen_key, "missing: the job has several pens, say which one draws this object");
     }
     obj.body = parse_object_body(obj.kind, o, ctx);
     o.finish();
@@ -307,11 +311,11 @@ JobFile parse_job(std::string_view text, const std::string& source) {
       const TextTemplate& t = obj.text_template();
       for (const std::string& c : t.counters())
         if (!job.counters.count(c))
-          o.fail("template", "{" + c + "}: no counter named \"" + c + "\" in \"counters\"");
+          o.fail(kTemplate.name.key, "{" + c + "}: no counter named \"" + c + "\" in \"counters\"");
       if (t.uses(FieldKind::shift) && job.shifts.empty())
-        o.fail("template", "{shift} needs the job's \"shifts\" (codes and start times)");
+        o.fail(kTemplate.name.key, "{shift} needs the job's \"shifts\" (codes and start times)");
       if (t.uses(FieldKind::column) && !job.data)
-        o.fail("template", "{col:" + t.columns().front() + "} needs the job's data list (\"data\": {\"file\": …})");
+        o.fail(kTemplate.name.key, "{col:" + t.columns().front() + "} needs the job's data list (\"data\": {\"file\": …})");
     }
     job.objects.push_back(std::move(obj));
   }

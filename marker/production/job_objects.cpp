@@ -4,9 +4,10 @@
 
 #include "base/error.hpp"
 #include "marker/codes/symbology.hpp"
-#include "marker/limits/code_limits.hpp"
-#include "marker/limits/fill_limits.hpp"
-#include "marker/limits/layout_limits.hpp"
+#include "marker/limits/code_settings.hpp"
+#include "marker/limits/fill_settings.hpp"
+#include "marker/limits/layout_settings.hpp"
+#include "marker/limits/production_settings.hpp"
 #include "marker/production/job_file.hpp"
 #include "marker/production/job_parse_context.hpp"
 #include "marker/production/json_reader.hpp"
@@ -22,72 +23,71 @@ FillOptions parse_fill(JsonReader& f, const JobParseContext& ctx, bool with_rule
   const double radius_mm = ctx.spot_diameter_um / 2000;
   o.inset_mm = o.contour_inset_mm = radius_mm;
   if (with_rule)
-    if (auto r = f.choice("rule", {"nonzero", "evenodd"})) o.rule = parse_fill_rule(*r);
+    if (auto r = f.choice(kFillRule)) o.rule = parse_fill_rule(*r);
   if (const nlohmann::json* sets = f.raw("sets")) {
-    if (!sets->is_array() || sets->empty() || sets->size() > 8)
-      f.fail("sets", "expected a list of 1 to 8 hatch sets {\"angle_deg\": …, \"spacing_mm\": …}");
+    if (!sets->is_array() || !kHatchSetsRange.contains(static_cast<std::int64_t>(sets->size())))
+      f.fail("sets", "expected a list of " + kHatchSetsRange.text() +
+                         " hatch sets {\"angle_deg\": …, \"spacing_mm\": …}");
     o.sets.clear();
     for (std::size_t i = 0; i < sets->size(); ++i) {
       JsonReader s((*sets)[i], f.file(), json_index(f.path_of("sets"), i));
       HatchSet h;
-      h.angle_deg = s.number("angle_deg", kHatchAngleRange).value_or(h.angle_deg);
-      h.spacing_mm = s.number("spacing_mm", kHatchSpacingRange).value_or(h.spacing_mm);
+      h.angle_deg = s.number(kHatchAngle).value_or(h.angle_deg);
+      h.spacing_mm = s.number(kHatchSpacing).value_or(h.spacing_mm);
       s.finish();
       o.sets.push_back(h);
     }
   } else {
-    o.sets.front().angle_deg = f.number("angle_deg", kHatchAngleRange).value_or(0);
-    o.sets.front().spacing_mm = f.number("spacing_mm", kHatchSpacingRange).value_or(o.sets.front().spacing_mm);
+    o.sets.front().angle_deg = f.number_or_default(kHatchAngle);
+    o.sets.front().spacing_mm = f.number_or_default(kHatchSpacing);
   }
-  if (auto d = f.choice("direction", {"bidirectional", "unidirectional"})) o.direction = parse_hatch_direction(*d);
-  if (auto d = f.choice("order", {"short", "raster"})) o.order = parse_hatch_order(*d);
-  o.inset_mm = f.number("inset_mm", kFillInsetRange).value_or(o.inset_mm);
-  o.contour_passes = static_cast<int>(f.integer("contour_passes", kContourPassesRange).value_or(0));
-  if (auto p = f.choice("contour_placement", {"before", "after"})) o.contour_placement = parse_contour_placement(*p);
-  o.contour_inset_mm = f.number("contour_inset_mm", kFillInsetRange).value_or(o.contour_inset_mm);
-  o.contour_spacing_mm = f.number("contour_spacing_mm", kHatchSpacingRange).value_or(o.sets.front().spacing_mm);
+  if (auto d = f.choice(kHatchDirection)) o.direction = parse_hatch_direction(*d);
+  if (auto d = f.choice(kHatchOrder)) o.order = parse_hatch_order(*d);
+  o.inset_mm = f.number(kHatchInset).value_or(o.inset_mm);
+  o.contour_passes = static_cast<int>(f.integer(kContourPasses).value_or(kContourPasses.fallback()));
+  if (auto p = f.choice(kContourPlacement)) o.contour_placement = parse_contour_placement(*p);
+  o.contour_inset_mm = f.number(kContourInset).value_or(o.contour_inset_mm);
+  o.contour_spacing_mm = f.number(kContourSpacing).value_or(o.sets.front().spacing_mm);
   f.finish();
   return o;
 }
 
 ObjectBody parse_text(JsonReader& o, const JobParseContext& ctx) {
   TextObject t;
-  const std::optional<std::string> source = o.string("template");
-  if (!source) o.fail("template", "a text object needs a template (the text to mark, fields in braces)");
-  t.text = TextTemplate::parse(*source, ctx.file + ": " + o.path_of("template"));
-  if (auto f = o.string("font")) {
-    if (f->empty()) o.fail("font", "the font name is empty");
+  const std::optional<std::string> source = o.string(kTemplate);
+  if (!source) o.fail(kTemplate.name.key, "a text object needs a template (the text to mark, fields in braces)");
+  t.text = TextTemplate::parse(*source, ctx.file + ": " + o.path_of(kTemplate.name.key));
+  if (auto f = o.string(kFont)) {
+    if (f->empty()) o.fail(kFont.name.key, "the font name is empty");
     t.font = *f;
   }
   LayoutOptions& l = t.layout;
-  l.height_mm = o.number("height_mm", kHeightRange).value_or(l.height_mm);
-  l.width_factor = o.number("width_factor", kWidthFactorRange).value_or(l.width_factor);
-  l.gap_mm = o.number("gap_mm", kGapRange).value_or(l.gap_mm);
-  l.line_spacing = o.number("line_spacing", kLineSpacingRange).value_or(l.line_spacing);
-  if (auto a = o.choice("align", {"left", "center", "right"}))
-    l.align = *a == "center" ? Align::center : *a == "right" ? Align::right : Align::left;
-  l.base = Point(o.number("x_mm", kPositionRange).value_or(0),
-                 o.number("y_mm", kPositionRange).value_or(0));
-  l.angle_deg = o.number("angle_deg", kAngleRange).value_or(0);
-  l.italic_deg = o.number("italic_deg", kItalicRange).value_or(0);
-  l.mirror = o.boolean("mirror").value_or(false);
-  l.replace_missing = o.boolean("replace_missing").value_or(false);
-  if (o.has("circle")) {
-    JsonReader c = o.object("circle");
+  l.height_mm = o.number_or_default(kHeight);
+  l.width_factor = o.number_or_default(kWidthFactor);
+  l.gap_mm = o.number_or_default(kGap);
+  l.line_spacing = o.number_or_default(kLineSpacing);
+  const std::string align = o.choice(kAlign).value_or(std::string(kAlign.value));
+  l.align = align == "center" ? Align::center : align == "right" ? Align::right : Align::left;
+  l.base = Point(o.number_or_default(kX), o.number_or_default(kY));
+  l.angle_deg = o.number_or_default(kAngle);
+  l.italic_deg = o.number_or_default(kItalic);
+  l.mirror = o.boolean(kMirror).value_or(false);
+  l.replace_missing = o.boolean(kReplaceMissing).value_or(false);
+  if (o.has(kCircle.name.key)) {
+    JsonReader c = o.object(kCircle.name.key);
     CircleFit fit;
-    const auto r = c.number("radius_mm", kRadiusRange);
+    const auto r = c.number(kCircleRadius);
     if (!r) c.fail("radius_mm", "circular fitting needs the circle's radius");
     fit.radius_mm = *r;
-    fit.center = Point(c.number("cx_mm", kPositionRange).value_or(0),
-                       c.number("cy_mm", kPositionRange).value_or(0));
-    fit.start_angle_deg = c.number("start_angle_deg", kAngleRange);
-    fit.inside = c.boolean("inside").value_or(false);
+    fit.center = Point(c.number_or_default(kCircleX), c.number_or_default(kCircleY));
+    fit.start_angle_deg = c.number(kStartAngle);
+    fit.inside = c.boolean(kInside).value_or(false);
     c.finish();
     if (l.angle_deg != 0)
-      o.fail("angle_deg", "a text angle cannot be combined with circular fitting; use circle.start_angle_deg");
+      o.fail(kAngle.name.key, "a text angle cannot be combined with circular fitting; use circle.start_angle_deg");
     l.circle = fit;
   }
-  if (auto s = o.choice("order", {"glyph", "shortest"})) t.order = parse_stroke_order(*s);
+  if (auto s = o.choice(kOrder)) t.order = parse_stroke_order(*s);
   if (o.has("fill")) {
     JsonReader f = o.object("fill");
     t.fill = parse_fill(f, ctx, true);
@@ -112,27 +112,28 @@ ObjectBody parse_code(JsonReader& o, const JobParseContext& ctx) {
   const std::optional<std::string> symbology = o.choice("symbology", names);
   if (!symbology) o.fail("symbology", "a code object needs its symbology (" + names.front() + ", …)");
   c.code.spec.symbology = parse_symbology(*symbology);
-  const std::optional<std::string> source = o.string("template");
-  if (!source) o.fail("template", "a code object needs a template (the data, fields in braces)");
-  c.data = TextTemplate::parse(*source, ctx.file + ": " + o.path_of("template"));
-  c.escapes = o.boolean("escapes").value_or(false);
+  const std::optional<std::string> source = o.string(kTemplate);
+  if (!source) o.fail(kTemplate.name.key, "a code object needs a template (the data, fields in braces)");
+  c.data = TextTemplate::parse(*source, ctx.file + ": " + o.path_of(kTemplate.name.key));
+  c.escapes = o.boolean(kCodeEscapes).value_or(false);
   CodeSpec& s = c.code.spec;
-  if (auto m = o.string("matrix_size"))
-    at_key(o, "matrix_size", [&] { parse_matrix_size(*m, s.matrix_rows, s.matrix_cols); });
-  if (auto sh = o.choice("shape", {"square", "rectangular", "any"})) s.shape = parse_matrix_shape(*sh);
-  if (auto e = o.choice("qr_ecc", {"L", "M", "Q", "H"})) s.qr_ecc = e->front();
-  s.qr_version = static_cast<int>(o.integer("qr_version", kQrVersionRange).value_or(0));
+  if (auto m = o.string(kMatrixSize))
+    at_key(o, kMatrixSize.name.key, [&] { parse_matrix_size(*m, s.matrix_rows, s.matrix_cols); });
+  if (auto sh = o.choice(kMatrixShape)) s.shape = parse_matrix_shape(*sh);
+  if (auto e = o.choice(kQrEcc)) s.qr_ecc = e->front();
+  s.qr_version = static_cast<int>(o.integer(kQrVersion).value_or(kQrVersion.fallback()));
   CodeLayout& l = c.code.layout;
-  l.center = Point(o.number("x_mm", kCodePositionRange).value_or(0), o.number("y_mm", kCodePositionRange).value_or(0));
-  l.angle_deg = o.number("angle_deg", kCodeAngleRange).value_or(0);
-  l.size_mm = o.number("size_mm", kCodeSizeRange).value_or(0);
-  l.module_mm = o.number("module_mm", kModuleRange).value_or(0);
-  if (l.size_mm > 0 && l.module_mm > 0) o.fail("module_mm", "give size_mm or module_mm, not both");
-  l.bar_height_mm = o.number("bar_height_mm", kBarHeightRange).value_or(0);
-  if (auto st = o.choice("style", {"square", "dot", "line"})) l.style = parse_module_style(*st);
-  if (auto d = o.choice("dot", {"spiral", "circle"})) l.dot = parse_dot_shape(*d);
-  l.dot_share = o.number("dot_size", kDotShareRange).value_or(1.0);
-  l.invert = o.boolean("invert").value_or(false);
+  l.center = Point(o.number_or_default(kCodeX), o.number_or_default(kCodeY));
+  l.angle_deg = o.number_or_default(kCodeAngle);
+  // 0: not given (the layout then takes the other, or the default module).
+  l.size_mm = o.number(kCodeSize).value_or(0);
+  l.module_mm = o.number(kModule).value_or(0);
+  if (l.size_mm > 0 && l.module_mm > 0) o.fail(kModule.name.key, "give size_mm or module_mm, not both");
+  l.bar_height_mm = o.number(kBarHeight).value_or(0);
+  if (auto st = o.choice(kModuleStyle)) l.style = parse_module_style(*st);
+  if (auto d = o.choice(kDotShape)) l.dot = parse_dot_shape(*d);
+  l.dot_share = o.number_or_default(kDotSize);
+  l.invert = o.boolean(kCodeInvert).value_or(false);
   if (o.has("hatch")) {
     JsonReader h = o.object("hatch");
     l.fill = parse_fill(h, ctx, false);

@@ -24,10 +24,10 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
+// The last part of a setting's key: its name in the object the reader reads.
+std::string_view leaf(const SettingName& n) {
+  const std::size_t dot = n.key.rfind('.');
+  return dot == std::string_view::npos ? n.key : n.key.substr(dot + 1);
 }
 
 const char* type_name(const nlohmann::json& j) {
@@ -80,6 +80,7 @@ void JsonReader::fail_here(const std::string& problem) const {
 
 const nlohmann::json* JsonReader::find(std::string_view key) {
   used_.insert(std::string(key));  // asked for: a known key, present or not
+  if (census) census->push_back(path_of(key));
   const auto it = j_.find(std::string(key));
   return it == j_.end() ? nullptr : &*it;
 }
@@ -105,13 +106,24 @@ std::optional<double> JsonReader::number(std::string_view key, const Range& rang
   if (!v) return std::nullopt;
   if (!v->is_number()) fail(key, std::string("expected a number, found ") + type_name(*v));
   const double d = v->get<double>();
-  if (!range.contains(d)) {
-    std::string value = num(d);
-    if (!range.unit.empty()) value.append(" ").append(range.unit);
-    fail(key, value + " is outside " + range.text());
-  }
+  // The command line's words for the same refusal (value_range.hpp's check_range).
+  if (!range.contains(d)) fail(key, format_number(d) + " is outside the range " + range.text());
   return d;
 }
+
+std::optional<double> JsonReader::number(const Quantity& s) { return number(leaf(s.name), s.range()); }
+
+std::optional<double> JsonReader::number(const Quantity& s, const Range& range) {
+  return number(leaf(s.name), range);
+}
+
+std::optional<std::int64_t> JsonReader::integer(const Count& s) { return integer(leaf(s.name), s.range); }
+
+std::optional<std::string> JsonReader::choice(const Choice& s) { return choice(leaf(s.name), s.names()); }
+
+std::optional<bool> JsonReader::boolean(const Toggle& s) { return boolean(leaf(s.name)); }
+
+std::optional<std::string> JsonReader::string(const Text& s) { return string(leaf(s.name)); }
 
 std::optional<std::int64_t> JsonReader::integer(std::string_view key, std::int64_t lo,
                                                 std::int64_t hi) {
@@ -133,7 +145,7 @@ std::optional<std::int64_t> JsonReader::integer(std::string_view key, const Whol
     fail(key, std::string("expected a whole number, found ") +
                   (v->is_number() ? "a fraction" : type_name(*v)));
   }
-  if (!range.contains(i)) fail(key, std::to_string(i) + " is outside " + range.text());
+  if (!range.contains(i)) fail(key, std::to_string(i) + " is outside the range " + range.text());
   return i;
 }
 

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "marker/limits/setting.hpp"
 #include "marker/limits/value_range.hpp"
 
 namespace mark {
@@ -27,6 +28,18 @@ class JsonReader {
   const nlohmann::json* raw(std::string_view key);  // marks it used; nullptr if absent
 
   std::optional<std::string> string(std::string_view key);
+
+  // A setting's key (marker/limits/: the same range, choices and words as its command-line
+  // option); a key with dots ("circle.cx_mm") is read by its last part in the object it names.
+  std::optional<double> number(const Quantity& s);
+  // Within `range`: the setting's, narrowed by what is known now (the head's positioning limit).
+  std::optional<double> number(const Quantity& s, const Range& range);
+  // The value, or the setting's default.
+  double number_or_default(const Quantity& s) { return number(s).value_or(s.fallback()); }
+  std::optional<std::int64_t> integer(const Count& s);
+  std::optional<std::string> choice(const Choice& s);
+  std::optional<bool> boolean(const Toggle& s);
+  std::optional<std::string> string(const Text& s);
   // Finite number within the range (marker/limits/: the same ranges as the command line's).
   std::optional<double> number(std::string_view key, const Range& range);
   // Finite number within [lo, hi] (named with `unit` in the error).
@@ -41,6 +54,11 @@ class JsonReader {
 
   // Throws for the first key nobody asked for.
   void finish() const;
+
+  // While set, every key any reader asks for (present or not) is appended as its JSON path
+  // ("pens.fine.speed_mm_s"): the settings test takes this census of a whole job to find keys
+  // that no settings table declares. Null (no census) otherwise; not for concurrent parses.
+  inline static std::vector<std::string>* census = nullptr;
   [[noreturn]] void fail(std::string_view key, const std::string& problem) const;
   [[noreturn]] void fail_here(const std::string& problem) const;
 

@@ -1,5 +1,5 @@
 // SerialStore: creating, inspecting, setting and reserving counters, and reading the log.
-#include "marker/limits/counter_limits.hpp"
+#include "marker/limits/production_settings.hpp"
 #include "marker/store/serial_store.hpp"
 #include "marker/store/utc_time.hpp"
 
@@ -113,8 +113,8 @@ void SerialStore::set(const CounterSpec& spec, std::int64_t value, const ShiftTa
 
 std::vector<Issue> SerialStore::reserve(const CounterSpec& spec, std::int64_t count, const ShiftTable& shifts,
                                         const MarkContext& ctx) {
-  if (!kReserveCountRange.contains(count))
-    throw InputError("serial reserve: the count must lie between " + kReserveCountRange.text() + ", got " +
+  if (!kReserveCount.range.contains(count))
+    throw InputError("serial reserve: the count must lie between " + kReserveCount.range.text() + ", got " +
                      std::to_string(count));
   return attempt(StoreStep::allocate, [&] {
     auto tx = backend_->begin();

@@ -4,6 +4,7 @@
 #include <set>
 #include <thread>
 
+#include "base/error.hpp"
 #include "marker/store/digest.hpp"
 #include "marker/store/utc_time.hpp"
 

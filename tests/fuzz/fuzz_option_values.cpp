@@ -16,7 +16,7 @@
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
 #include "marker/limits/cnc_limits.hpp"
-#include "marker/limits/layout_limits.hpp"
+#include "marker/limits/layout_settings.hpp"
 
 namespace {
 
@@ -70,7 +70,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const double w = b.width(), h = b.height();
     if (!size_ok(w, b.min.x(), b.max.x()) || !size_ok(h, b.min.y(), b.max.y()))
       broken("a stock size outside its range", w);
-    if (!mark::kPositionRange.contains(b.min.x()) || !mark::kPositionRange.contains(b.min.y()))
+    if (!mark::kPositionBounds.range().contains(b.min.x()) || !mark::kPositionBounds.range().contains(b.min.y()))
       broken("a stock corner outside its range", b.min.x());
   } catch (const mark::InputError&) {
   }

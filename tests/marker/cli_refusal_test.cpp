@@ -75,7 +75,7 @@ TEST(CliRefusal, LayoutOptionsOutsideTheirRanges) {
        "the text layout leaves the field by 48.250 mm at the right: it spans x 0.500 to 103.250 mm, y 0.000 "
        "to 5.000 mm; the field is 110.000 mm square (±55.000 mm); lower --height, move the text with --x, --y "
        "or --align, or enlarge --field"},
-      {{"layout", "X", "--bogus"}, "The following argument was not expected: --bogus"},
+      {{"layout", "X", "--bogus"}, "layout: unknown option --bogus"},
       {{"layout"}, "text is required"},
   });
 }
@@ -128,7 +128,7 @@ TEST(CliRefusal, GcodeAndToolMeasureOptions) {
        "raise the step-over or narrow the margin"},
       {{"gcode", "X", "-o", "OUT/a.ngc", "--dialect", "plain", "--header", std::string(80, 'G')},
        "header line 'GGGGGGGGGGGGGGGGGGGG…' has 80 characters, more than the plain dialect's 79 per line"},
-      {{"gcode", "X", "-o", "OUT/a.ngc", "--mode", "bogus"}, "--mode: bogus not in {depression,protrusion,v-carve}"},
+      {{"gcode", "X", "-o", "OUT/a.ngc", "--mode", "bogus"}, "--mode: 'bogus' is not one of depression, protrusion, v-carve"},
       {{"tool-measure", "x.png", "--pixel-size", "0"}, "--pixel-size: 0 is outside the range 0.01 to 10000 µm"},
       {{"tool-measure", "x.png", "--pixel-size", "5", "--tangential-angle", "0"},
        "--tangential-angle: 0 is outside the range above 0, up to 90 degrees"},
@@ -176,13 +176,14 @@ TEST(CliRefusal, MarkOptions) {
        "8.000 mm; the field is 110.000 mm square (±55.000 mm); lower --height, move the text with --x, --y or "
        "--align, or enlarge --field"},
       {{"mark", "X", "--run-out", "1e300"}, "--run-out: 1e300 is outside the range 0 to 10 mm"},
-      {{"mark", "X", "--tick", "0"}, "--tick: 0 is outside the range 1 to 1000 µs"},
+      {{"mark", "X", "--tick", "0"}, "--tick: 0 is outside the range 1 to 24 µs (20 % of head SL10's τ)"},
       {{"mark", "X", "--speed", "1e300"},
-       "--speed: 1e300 is outside the range above 0, up to 19200 mm/s (head SL10's positioning limit)"},
+       "--speed: 1e300 is outside the range 0.001 to 19200 mm/s (head SL10's positioning limit)"},
       {{"mark", "X", "--speed", "fast", "--head", "SL14"},
-       "--speed: 'fast' is neither auto nor a number (range: above 0, up to 16000 mm/s (head SL14's positioning "
+       "--speed: 'fast' is neither auto nor a number (range: 0.001 to 16000 mm/s (head SL14's positioning "
        "limit))"},
-      {{"mark", "X", "--jump-speed", "1e9"}, "--jump-speed: 1e9 is outside the range 1 to 100000 mm/s"},
+      {{"mark", "X", "--jump-speed", "1e9"},
+       "--jump-speed: 1e+09 is outside the range 1 to 19200 mm/s (head SL10's positioning limit)"},
       {{"mark", "X", "--jump-speed", "50000"},
        "--jump-speed: 50000 is outside the range 1 to 19200 mm/s (head SL10's positioning limit)"},
       {{"mark", "X", "--dose-png", "OUT/dose.svg"},
@@ -198,7 +199,7 @@ TEST(CliRefusal, JobNewAndSerialOptions) {
       {{"job", "new", "-o", "OUT/j.json", "--text", "SN {serial}", "--power", "150"},
        "--power: 150 is outside the range 0 to 100 %"},
       {{"job", "new", "-o", "OUT/j.json", "--text", "SN {serial}", "--frequency", "0"},
-       "--frequency: 0 is outside the range 0.1 to 10000 kHz"},
+       "--frequency: 0 is outside the range 1 to 4000 kHz"},
       {{"job", "new", "-o", "OUT/j.json", "--text", "SN {serial}", "--passes", "1.5"},
        "--passes: '1.5' is not a whole number (range: 1 to 100)"},
       {{"job", "new", "-o", "OUT/j.json", "--text", "SN {serial}", "--width", "65"},
@@ -207,9 +208,13 @@ TEST(CliRefusal, JobNewAndSerialOptions) {
        "--height: 1e9 is outside the range 0.01 to 10000 mm"},
       {{"job", "new", "-o", "OUT/j.txt", "--text", "A"},
        "--output '" + (temp_dir() / "out/j.txt").string() + "': the name must end in .json"},
-      // Limits that depend on the head are the job file's: the message names the key it wrote.
+      // Limits that depend on the head are the job file's, in the same words.
       {{"job", "new", "-o", "OUT/j.json", "--text", "A", "--speed", "20000"},
-       (temp_dir() / "out/j.json").string() + ": pens.default.speed_mm_s: 20000 mm/s is outside 0.001 to 19200 mm/s"},
+       "--speed: 20000 is outside the range 0.001 to 19200 mm/s (head SL10's positioning limit)"},
+      {{"job", "new", "-o", "OUT/j.json", "--text", "A", "--jump-speed", "20000"},
+       (temp_dir() / "out/j.json").string() +
+           ": pens.default.jump_speed_mm_s: 20000 is outside the range 1 to 19200 mm/s (head SL10's positioning "
+           "limit)"},
       {{"serial", "reserve", "sn", "0", "--store", "OUT/s.sqlite"}, "count: 0 is outside the range 1 to 1000000"},
   });
 }

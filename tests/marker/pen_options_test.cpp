@@ -82,7 +82,7 @@ TEST(PenOptions, BadValuesAreRefusedByName) {
   // Within the option's range but beyond the head's.
   EXPECT_EQ(error("--jump-speed 50000"),
             "--jump-speed: 50000 is outside the range 1 to 19200 mm/s (head SL10's positioning limit)");
-  EXPECT_NE(error("--corner wavy").find("corner strategy 'wavy'"), std::string::npos);
+  EXPECT_NE(error("--corner wavy").find("'wavy' is not one of blanking, delays, none"), std::string::npos);
   EXPECT_NE(error("--speed 0").find("--speed: 0 is outside the range"), std::string::npos);
   EXPECT_NE(error("--head-profile /nonexistent.json").find("cannot be read"), std::string::npos);
   // A profile identified on another head is refused, naming both.

@@ -97,8 +97,8 @@ TEST(CodeCli, OptionsOutsideTheirRangesAreOneLineErrors) {
            {{"--camera", "zoom=2"}, "--camera: unknown key 'zoom' (keys: pixel_um, "},
            {{"--camera", "seed=1.5"}, "--camera seed: '1.5' is not a whole number"},
            {{"--reader", "zbar"}, "--reader zbar does not read datamatrix"},
-           {{"--require-grade", "E"}, "--require-grade 'E' is not one of A, B, C, D"},
-           {{"--style", "star"}, "module style 'star' is not one of square, dot, line"},
+           {{"--require-grade", "E"}, "--require-grade: 'E' is not one of A, B, C, D"},
+           {{"--style", "star"}, "--style: 'star' is not one of square, dot, line"},
            {{"--matrix-size", "11x11"}, "Data Matrix size 11x11 is not an ECC 200 size"},
            {{"--x", "60"}, "code 1 with its quiet zone leaves the field"},
            {{"--head", "XY"}, "--head 'XY' is not one of SL10, SL14, cheap"}}) {
@@ -132,9 +132,9 @@ TEST(FillCli, SingleLineFontAndBadOptionsAreRefused) {
   EXPECT_NE(stroke.err.find("only closed outlines can be filled"), std::string::npos) << stroke.err;
   const test::CliResult rule = test::run_cli({"preview", "A", "--font", "DejaVuSans", "--fill", "hatch", "--fill-rule", "odd",
                                               "-o", svg.string()});
-  EXPECT_EQ(rule.err, "marker: fill rule 'odd' is not one of nonzero, evenodd\n");
+  EXPECT_EQ(rule.err, "marker: --fill-rule: 'odd' is not one of nonzero, evenodd\n");
   const test::CliResult mode = test::run_cli({"preview", "A", "--font", "DejaVuSans", "--fill", "cross", "-o", svg.string()});
-  EXPECT_EQ(mode.err, "marker: --fill 'cross' is not one of none, hatch\n");
+  EXPECT_EQ(mode.err, "marker: --fill: 'cross' is not one of none, hatch\n");
   EXPECT_FALSE(fs::exists(svg));
 }
 

@@ -17,8 +17,10 @@ namespace {
 
 std::vector<std::vector<std::string>> every_reader(const std::string& image, const std::string& good,
                                                    const std::string& out) {
-  return {{"gravure", image, "--preview", out},
-          {"gravure", good, "--mask", image, "--preview", out},
+  // A preview's name must end in .png or .svg (checked before the image is read).
+  const std::string preview = out + ".png";
+  return {{"gravure", image, "--preview", preview},
+          {"gravure", good, "--mask", image, "--preview", preview},
           {"gcode", "A", "--mode", "protrusion", "--tool-image", image, "--pixel-size", "5", "-o", out},
           {"tool-measure", image, "--pixel-size", "5"}};
 }
@@ -45,6 +47,7 @@ TEST(ImageCallers, EveryCommandRefusesHostilePngsWithTheSameLine) {
       EXPECT_EQ(r.code, 1) << args[0] << " " << args[1];
       EXPECT_EQ(r.err, line) << args[0] << " " << args[1];
       EXPECT_FALSE(fs::exists(out));
+      EXPECT_FALSE(fs::exists(out + ".png"));
     }
   fs::remove_all(dir);
 }

@@ -95,7 +95,7 @@ TEST(JobCode, MalformedCodesAndFillsGiveOneLineErrors) {
       {with("\"style\": \"square\"", "\"style\": \"star\""),
        "job.json: objects[1].style: \"star\" is not one of square, dot, line"},
       {with("\"spacing_mm\": 0.03", "\"spacing_mm\": 0"),
-       "job.json: objects[1].hatch.spacing_mm: 0 mm is outside 0.001 to 10 mm"},
+       "job.json: objects[1].hatch.spacing_mm: 0 is outside the range 0.001 to 10 mm"},
       {with("\"contour_passes\": 1", "\"contour_passes\": 1, \"loops\": 2"),
        "job.json: objects[0].fill.loops: unknown key"},
       {with("{\"angle_deg\": 90}", "{\"angle_deg\": 90, \"spacing\": 1}"),

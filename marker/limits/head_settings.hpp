@@ -1,0 +1,34 @@
+#pragma once
+// The settings of the scan head a job marks with: the preset, its simulated servo and laser
+// rise, the spot and the field (one declaration each, setting.hpp). A job file names them at its
+// top level ("head", "field_mm"); on the command line they are the --head options of every
+// command that drives a head and the layout's --field.
+#include "marker/limits/setting.hpp"
+
+namespace mark {
+
+// The presets of driver/sim/head_model.hpp (a test keeps this list equal to head_names()).
+inline constexpr Text kHead{
+    {"--head", "head",
+     "scan head preset: SL10, SL14, cheap, SA14 (a job file may give {\"model\": …, \"spot_diameter_um\": …})"},
+    "SL10"};
+inline constexpr Choice kHeadModel{
+    {"--head-model", "", "the simulated head's servo: first or second order"}, "first, second", {}, "the preset's"};
+inline constexpr Quantity kHeadZeta{
+    {"--head-zeta", "", "damping ζ of a second-order servo (--head-model second, or a second-order preset)"},
+    {0.05, 10, ""}, {}, "the preset's"};
+inline constexpr Quantity kLaserRise{
+    {"--laser-rise-us", "", "laser power rise and fall time constant (0: instant)"}, {0, 1000, "µs"}, 0};
+inline constexpr Quantity kSpot{
+    {"--spot", "head.spot_diameter_um", "focused spot diameter (pulse overlap is measured against it)"},
+    {1, 10000, "µm"}, 40};
+// The largest field is a 10 m CNC table, the smallest a 1 mm micro-marking field; a laser head's
+// field is at most the head's own (limited_range with the head's field_mm).
+inline constexpr Quantity kField{
+    {"--field", "field_mm", "field size (square; a scan head's at most its own field)"},
+    {1, 10000, "mm"}, 110, "110; a job file: the head's (110)"};
+
+inline constexpr SettingRef kHeadSettingList[] = {&kHead, &kHeadModel, &kHeadZeta, &kLaserRise, &kSpot, &kField};
+inline constexpr SettingTable kHeadSettings{"head", "Head", "", kHeadSettingList};
+
+}  // namespace mark

@@ -39,6 +39,7 @@ Command make_devices_command();
 Command make_frame_command();
 Command make_head_command();
 Command make_lmc_command();
+Command make_serve_command();
 
 std::vector<Command> all_commands();
 

@@ -33,9 +33,8 @@ void Station::emit(const std::string& line) const {
 
 // Everything but STATUS and ABORT uses the source, which a running part holds: refused busy.
 // Paused and error refuse only what would mark; the others apply.
-std::optional<StationError> Station::refuse_unless_still(std::string_view what) const {
+std::optional<StationError> Station::refuse_unless_still() const {
   if (state_ == StationState::marking) return busy();
-  (void)what;
   return std::nullopt;
 }
 
@@ -117,21 +116,16 @@ StationState Station::abort() {
   return state_;
 }
 
-std::optional<StationError> Station::pause() {
-  std::lock_guard lock(mutex_);
-  if (state_ == StationState::marking) return busy();
-  if (state_ == StationState::error) return StationError{"error", "the station is in error: RESET first"};
-  if (state_ != StationState::paused) emit("state paused");
-  state_ = StationState::paused;
-  return std::nullopt;
-}
+std::optional<StationError> Station::pause() { return hold(StationState::paused); }
+std::optional<StationError> Station::resume() { return hold(StationState::idle); }
 
-std::optional<StationError> Station::resume() {
+// PAUSE and RESUME: between idle and paused only; a part or a fault must end first.
+std::optional<StationError> Station::hold(StationState to) {
   std::lock_guard lock(mutex_);
   if (state_ == StationState::marking) return busy();
   if (state_ == StationState::error) return StationError{"error", "the station is in error: RESET first"};
-  if (state_ != StationState::idle) emit("state idle");
-  state_ = StationState::idle;
+  if (state_ != to) emit("state " + std::string(to_string(to)));
+  state_ = to;
   return std::nullopt;
 }
 
@@ -153,7 +147,7 @@ std::optional<StationError> Station::reset() {
 
 std::optional<StationError> Station::set_variable(const std::string& name, const std::string& value) {
   std::lock_guard lock(mutex_);
-  if (auto e = refuse_unless_still("SET")) return e;
+  if (auto e = refuse_unless_still()) return e;
   try {
     source_.set_variable(name, value);
   } catch (const std::exception& e) {
@@ -165,7 +159,7 @@ std::optional<StationError> Station::set_variable(const std::string& name, const
 
 std::optional<StationError> Station::load(const std::string& job) {
   std::lock_guard lock(mutex_);
-  if (auto e = refuse_unless_still("LOAD")) return e;
+  if (auto e = refuse_unless_still()) return e;
   try {
     source_.load(job);
   } catch (const std::exception& e) {
@@ -179,7 +173,7 @@ std::optional<StationError> Station::load(const std::string& job) {
 std::optional<StationError> Station::preview(std::vector<ObjectText>& texts,
                                              std::map<std::string, std::int64_t>& serials) {
   std::lock_guard lock(mutex_);
-  if (auto e = refuse_unless_still("PREVIEW")) return e;
+  if (auto e = refuse_unless_still()) return e;
   try {
     texts = source_.preview(&serials);
   } catch (const std::exception& e) {
@@ -191,7 +185,7 @@ std::optional<StationError> Station::preview(std::vector<ObjectText>& texts,
 std::optional<StationError> Station::next_serial(const std::string& counter,
                                                  std::optional<std::int64_t>& next) {
   std::lock_guard lock(mutex_);
-  if (auto e = refuse_unless_still("SERIAL")) return e;
+  if (auto e = refuse_unless_still()) return e;
   try {
     next = source_.next_serial(counter);
   } catch (const std::exception& e) {

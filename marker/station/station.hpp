@@ -106,7 +106,8 @@ class Station {
  private:
   std::optional<StationError> begin();  // idle → marking, under the lock
   MarkAttempt run();                    // the part, then marking → idle / error
-  std::optional<StationError> refuse_unless_still(std::string_view what) const;  // lock held
+  std::optional<StationError> refuse_unless_still() const;  // lock held
+  std::optional<StationError> hold(StationState to);        // pause / resume
   void emit(const std::string& line) const;
 
   PartSource& source_;

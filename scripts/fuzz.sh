@@ -9,12 +9,12 @@
 # UDI, the zint wrapper), head profiles, the option-value parsers (numbers, "CX,CY,R", "WxH", --stock, --travel), the camera
 # option (--camera KEY=VALUE,…), and
 # the LMC driver's readers (lmc_reply: replies and command words; cor_file: EzCad .cor files and
-# captures). All 15 at the default 20 s run for about five minutes, plus the build.
+# captures). All 16 at the default 20 s run for about five minutes, plus the build.
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${MARKER_FUZZ_BUILD:-$root/build-fuzz}
-all_targets=(jhf lff cxf outline_font job data_list glyph_script pgm png option_values camera_option lmc_reply cor_file code_data head_profile)
+all_targets=(jhf lff cxf outline_font job data_list glyph_script pgm png option_values camera_option lmc_reply cor_file code_data head_profile station_line)
 
 seconds=20
 if [[ ${1:-} =~ ^[0-9]+$ ]]; then

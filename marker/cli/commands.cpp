@@ -22,6 +22,7 @@ std::vector<Command> all_commands() {
   c.push_back(make_head_command());
   c.push_back(make_options_command());
   c.push_back(make_lmc_command());
+  c.push_back(make_serve_command());
   return c;
 }
 

@@ -40,6 +40,7 @@ Command make_frame_command();
 Command make_head_command();
 Command make_options_command();
 Command make_lmc_command();
+Command make_serve_command();
 
 std::vector<Command> all_commands();
 

@@ -59,8 +59,8 @@ void print_stop(const PartResult& p, long long index) {
                    : ("; its numbers are void (" + serials_text(p.serials) + ")").c_str());
 }
 
-// The station's start: its journal replayed, rows a dead run left open closed, counters the
-// store lacks created (--create-counters) or refused with the command that creates them.
+}  // namespace
+
 void start_station(SerialStore& store, const MarkContext& context, const JobFile& job, const MarkJobArgs& a) {
   const StationStart started = store.start_station(context);
   const auto ids = [](const std::vector<std::int64_t>& list) {
@@ -97,6 +97,8 @@ void start_station(SerialStore& store, const MarkContext& context, const JobFile
     throw InputError(msg);
   }
 }
+
+namespace {
 
 // The part's outcome did not reach the store: where it is, on one line (stderr).
 void print_record(const PartResult& p, long long index) {

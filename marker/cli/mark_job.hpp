@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "marker/cli/production_options.hpp"
+#include "marker/production/job_file.hpp"
 
 namespace mark::cli {
 
@@ -32,5 +33,10 @@ struct MarkJobArgs {
 };
 
 int run_mark_job(const MarkJobArgs& args);
+
+// The station's start (also `marker serve`'s): its journal replayed, rows a dead run left open
+// closed, counters the store lacks created (--create-counters) or refused with the command that
+// creates them; what it did on stderr.
+void start_station(SerialStore& store, const MarkContext& context, const JobFile& job, const MarkJobArgs& a);
 
 }  // namespace mark::cli

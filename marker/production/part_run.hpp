@@ -90,6 +90,11 @@ class PartRunner {
   // Row `original` marked again.
   PartResult remark(std::int64_t original, SysTime now, const PartOptions& options);
 
+  // The variables of the parts from now on (a station's SET between parts); job_variables
+  // checked them against the job's templates.
+  void set_variables(std::map<std::string, std::string> variables) { variables_ = std::move(variables); }
+  const std::map<std::string, std::string>& variables() const { return variables_; }
+
  private:
   std::vector<CompiledJob> compile(const std::vector<ObjectText>& texts);
   PartResult run(PartResult part, std::vector<CompiledJob> compiled, const PartOptions& options);

@@ -1,0 +1,120 @@
+// The station over its TCP line protocol on loopback (issue 22's figures): a 20-character
+// serial job ("SN " + 17 digits) on the simulated scanner with a SQLite store in a temporary
+// folder, `marker serve`'s parts (JobSource → Station → TcpServer) in process, one client
+// sending MARK back to back.
+//
+//   station_tcp [--parts N] [--real-time]
+//
+// Prints per MARK: the round trip (client's send to the reply line), and trigger to first
+// sample = round trip − (the part's wall time from its first sample in the line memory to its
+// end: JobResult wall_time_s − compile_time_s) — an upper bound, since recording the outcome
+// and the reply's way back stay in it; then marks per second. Virtual time by default (the
+// drain as fast as the scanner takes samples), so marks/s is the station's own overhead.
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+#include <vector>
+
+#include "marker/cli/serve_source.hpp"
+#include "marker/station/tcp_server.hpp"
+
+namespace {
+
+constexpr const char* kJob = R"({
+  "format": "marker-job/1", "head": "SL10", "time_zone": "UTC",
+  "counters": {"serial": {"start": 1, "width": 17}},
+  "pens": {"fine": {"speed_mm_s": 2000, "power_pct": 100, "frequency_khz": 40}},
+  "objects": [{"name": "serial", "pen": "fine", "template": "SN {serial}", "height_mm": 2, "x_mm": -30, "y_mm": 0}]
+})";
+
+double quantile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app("the marking station's TCP figures on loopback");
+  int parts = 200;
+  bool real_time = false;
+  app.add_option("--parts", parts, "MARKs to send")->check(CLI::Range(2, 1'000'000));
+  app.add_flag("--real-time", real_time, "drain at the scanner's clock (default: virtual time)");
+  CLI11_PARSE(app, argc, argv);
+
+  const auto dir = std::filesystem::temp_directory_path() / ("station-bench-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "serial20.json") << kJob;
+  std::vector<double> rtt_ms, first_ms, compile_ms;
+  double total_s = 0;
+  {
+    mark::cli::MarkJobArgs a;
+    a.job = (dir / "serial20.json").string();
+    a.store.store = (dir / "bench.sqlite").string();
+    a.station = "bench";
+    a.create_counters = true;
+    a.virtual_time = !real_time;
+    a.device = "sim";
+    mark::cli::JobSource source(a);
+    mark::Station station(source);
+    mark::TcpServer server(station, mark::parse_listen_address("127.0.0.1:0", "--listen"), 8);
+    std::atomic<bool> stop{false};
+    std::thread serving([&] { server.serve([&] { return stop.load(); }); });
+
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in sa{};
+    sa.sin_family = AF_INET;
+    sa.sin_port = htons(static_cast<std::uint16_t>(server.port()));
+    ::inet_pton(AF_INET, "127.0.0.1", &sa.sin_addr);
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0) return 1;
+    const auto t_all = std::chrono::steady_clock::now();
+    std::string buf;
+    for (int i = 0; i < parts; ++i) {
+      const auto t0 = std::chrono::steady_clock::now();
+      ::send(fd, "MARK\n", 5, MSG_NOSIGNAL);
+      std::size_t nl;
+      while ((nl = buf.find('\n')) == std::string::npos) {
+        char chunk[4096];
+        const ssize_t n = ::recv(fd, chunk, sizeof chunk, 0);
+        if (n <= 0) return 1;
+        buf.append(chunk, static_cast<std::size_t>(n));
+      }
+      const std::string reply = buf.substr(0, nl);
+      buf.erase(0, nl + 1);
+      const double rtt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      if (reply.rfind("OK ", 0) != 0) {
+        std::fprintf(stderr, "station_tcp: part %d: %s\n", i + 1, reply.c_str());
+        return 1;
+      }
+      const auto last = station.status().last;
+      const auto& r = last->objects.at(0).result;
+      rtt_ms.push_back(rtt);
+      first_ms.push_back(rtt - 1e3 * (r.wall_time_s - r.compile_time_s));
+      compile_ms.push_back(1e3 * r.compile_time_s);
+    }
+    total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_all).count();
+    ::close(fd);
+    stop = true;
+    serving.join();
+  }
+  std::filesystem::remove_all(dir);
+  std::printf("station_tcp: %d parts (%s), 20-character serial \"SN 00000000000000001\"\n", parts,
+              real_time ? "real time" : "virtual time");
+  std::printf("  MARK round trip          median %.3f ms  p99 %.3f ms\n", quantile(rtt_ms, 0.5), quantile(rtt_ms, 0.99));
+  std::printf("  trigger to first sample  median %.3f ms  p99 %.3f ms  (upper bound)\n", quantile(first_ms, 0.5),
+              quantile(first_ms, 0.99));
+  std::printf("  of which the object's compile (text to first sample in the line memory)  median %.3f ms  p99 %.3f ms\n",
+              quantile(compile_ms, 0.5), quantile(compile_ms, 0.99));
+  std::printf("  marks per second         %.1f\n", parts / total_s);
+  return 0;
+}

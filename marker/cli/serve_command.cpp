@@ -1,0 +1,88 @@
+// `marker serve --job FILE [--device D] [--listen 127.0.0.1:PORT] [--store PATH|URL]
+//  [--station NAME] [--set NAME=VALUE …] [--create-counters] [--virtual-time]
+//  [--max-connections N]`: the marking station (docs/station.md). Loads the job once, keeps the
+// device open and marks on command over the TCP line protocol (marker/station/). One log line
+// per event on stderr. SIGTERM / Ctrl-C: a part in progress is aborted with the laser off and
+// recorded aborted (its numbers void), every connection is closed, exit 0.
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <mutex>
+
+#include "marker/cli/commands.hpp"
+#include "marker/cli/interrupt.hpp"
+#include "marker/cli/option_ranges.hpp"
+#include "marker/cli/serve_source.hpp"
+#include "marker/limits/station_limits.hpp"
+#include "marker/station/tcp_server.hpp"
+
+namespace mark::cli {
+namespace {
+
+struct ServeArgs {
+  MarkJobArgs job;
+  std::string listen = kStationListenDefault;
+  int max_connections = kStationConnectionsDefault;
+};
+
+// One line per event: UTC time, then what happened (a line at a time from any thread).
+void log_line(const std::string& event) {
+  static std::mutex m;
+  const auto now = std::chrono::system_clock::now();
+  const std::time_t t = std::chrono::system_clock::to_time_t(now);
+  const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
+  std::tm tm{};
+  ::gmtime_r(&t, &tm);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%S", &tm);
+  std::lock_guard lock(m);
+  std::fprintf(stderr, "marker: serve: %s.%03dZ %s\n", stamp, static_cast<int>(ms), event.c_str());
+  std::fflush(stderr);
+}
+
+int serve(const ServeArgs& a) {
+  const ListenAddress address = parse_listen_address(a.listen, "--listen");
+  JobSource source(a.job);
+  Station station(source, log_line);
+  TcpServer server(station, address, a.max_connections, log_line);
+  log_line("listening on " + address.host + ":" + std::to_string(server.port()) + " job " + a.job.job);
+  server.serve([] { return interrupt_flag().requested(); });
+  // SIGTERM: the laser off and a part in progress recorded aborted before anything closes.
+  const StationState was = station.abort();
+  log_line(std::string("stopping (state ") + std::string(to_string(was)) + ")");
+  server.stop();
+  station.wait_idle();
+  log_line("stopped");
+  return 0;
+}
+
+}  // namespace
+
+Command make_serve_command() {
+  auto a = std::make_shared<ServeArgs>();
+  return Command(
+      [=](CLI::App& app) {
+        auto* sub = app.add_subcommand("serve", "the marking station: mark the parts of a job on command over TCP");
+        MarkJobArgs& p = a->job;
+        sub->add_option("--job", p.job, "the job file the station marks")->required();
+        sub->add_option("--device", p.device,
+                        "sim, lmc, lmc:SERIAL, lmc-capture:FILE or lmc-emulated[:VARIANT] (default: the job's)");
+        sub->add_option("--listen", a->listen,
+                        "TCP line protocol on HOST:PORT, loopback only (port 0: a free one, logged)")
+            ->capture_default_str();
+        add_ranged_option(*sub, "--max-connections", a->max_connections,
+                          "TCP clients at a time (one more gets ERR toomany)", kStationConnectionsRange)
+            ->capture_default_str();
+        sub->add_option("--set", p.sets, "variable value NAME=VALUE (repeatable; SET changes it later)");
+        sub->add_option("--station", p.station, "station name in the audit log (default: host name)");
+        sub->add_flag("--create-counters", p.create_counters,
+                      "create the job's counters the store does not know, each at its start");
+        sub->add_flag("--virtual-time", p.virtual_time,
+                      "drain each mark as fast as the device accepts (simulated devices; tests and benchmarks)");
+        add_store_options(*sub, p.store, true);
+        return sub;
+      },
+      [=] { return serve(*a); });
+}
+
+}  // namespace mark::cli

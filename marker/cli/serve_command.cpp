@@ -13,7 +13,10 @@
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/serve_source.hpp"
-#include "marker/limits/station_limits.hpp"
+#include "marker/limits/device_settings.hpp"
+#include "marker/limits/marking_settings.hpp"
+#include "marker/limits/production_settings.hpp"
+#include "marker/limits/station_settings.hpp"
 #include "marker/station/tcp_server.hpp"
 
 namespace mark::cli {
@@ -21,8 +24,8 @@ namespace {
 
 struct ServeArgs {
   MarkJobArgs job;
-  std::string listen = kStationListenDefault;
-  int max_connections = kStationConnectionsDefault;
+  std::string listen;      // the settings' defaults (add_setting)
+  int max_connections = 0;
 };
 
 // One line per event: UTC time, then what happened (a line at a time from any thread).
@@ -65,20 +68,13 @@ Command make_serve_command() {
         auto* sub = app.add_subcommand("serve", "the marking station: mark the parts of a job on command over TCP");
         MarkJobArgs& p = a->job;
         sub->add_option("--job", p.job, "the job file the station marks")->required();
-        sub->add_option("--device", p.device,
-                        "sim, lmc, lmc:SERIAL, lmc-capture:FILE or lmc-emulated[:VARIANT] (default: the job's)");
-        sub->add_option("--listen", a->listen,
-                        "TCP line protocol on HOST:PORT, loopback only (port 0: a free one, logged)")
-            ->capture_default_str();
-        add_ranged_option(*sub, "--max-connections", a->max_connections,
-                          "TCP clients at a time (one more gets ERR toomany)", kStationConnectionsRange)
-            ->capture_default_str();
-        sub->add_option("--set", p.sets, "variable value NAME=VALUE (repeatable; SET changes it later)");
-        sub->add_option("--station", p.station, "station name in the audit log (default: host name)");
-        sub->add_flag("--create-counters", p.create_counters,
-                      "create the job's counters the store does not know, each at its start");
-        sub->add_flag("--virtual-time", p.virtual_time,
-                      "drain each mark as fast as the device accepts (simulated devices; tests and benchmarks)");
+        add_setting(*sub, kDevice, p.device);
+        add_setting(*sub, kListen, a->listen);
+        add_setting(*sub, kMaxConnections, a->max_connections);
+        add_setting(*sub, kSet, p.sets);
+        add_setting(*sub, kStation, p.station);
+        add_setting(*sub, kCreateCounters, p.create_counters);
+        add_setting(*sub, kVirtualTime, p.virtual_time);
         add_store_options(*sub, p.store, true);
         return sub;
       },

@@ -16,13 +16,14 @@
 #include "marker/limits/peen_settings.hpp"
 #include "marker/limits/pen_settings.hpp"
 #include "marker/limits/production_settings.hpp"
+#include "marker/limits/station_settings.hpp"
 
 namespace mark {
 
 inline constexpr const SettingTable* kSettingTables[] = {
     &kHeadSettings,    &kPenSettings,    &kLayoutSettings, &kFillSettings,    &kCodeSettings,
     &kMarkingSettings, &kDeviceSettings, &kObjectSettings, &kJobSettings,     &kCounterSettings,
-    &kRunSettings,     &kPeenSettings,   &kCncSettings,    &kGravureSettings};
+    &kRunSettings,     &kPeenSettings,   &kCncSettings,    &kGravureSettings, &kStationSettings};
 
 // The table with this id, or nullptr.
 const SettingTable* find_setting_table(std::string_view id);

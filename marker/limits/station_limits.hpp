@@ -1,14 +1,14 @@
 #pragma once
-// What `marker serve` accepts (docs/station.md): every setting of the station with its range.
+// The values inside the station's options and lines (docs/station.md): --listen's port and the
+// line protocol's limits; the options themselves are declared in station_settings.hpp.
+#include <string_view>
+
 #include "marker/limits/value_range.hpp"
 
 namespace mark {
 
-// --max-connections: clients of the TCP line protocol at a time (one more gets ERR toomany).
-inline const WholeRange kStationConnectionsRange{1, 64};
-inline constexpr int kStationConnectionsDefault = 8;
 // --listen's port (0: a free one, which the server logs).
-inline const WholeRange kStationPortRange{0, 65535};
-inline constexpr const char* kStationListenDefault = "127.0.0.1:5555";
+inline constexpr WholeRange kStationPortRange{0, 65535};
+inline constexpr std::string_view kStationListenDefault = "127.0.0.1:5555";
 
 }  // namespace mark

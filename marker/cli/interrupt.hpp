@@ -34,5 +34,8 @@ std::uint64_t interrupt_count();
 
 // Exit status of a command stopped by a signal: 128 + SIGINT, as shells report it.
 inline constexpr int kExitInterrupted = 130;
+// A production part marked but rejected by its verification (a code not read back): 2, as
+// `marker code` exits for a code that does not read.
+inline constexpr int kExitRejected = 2;
 
 }  // namespace mark::cli

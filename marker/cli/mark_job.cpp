@@ -35,7 +35,7 @@ void print_part(const PartResult& p, long long index, long long count) {
               static_cast<long long>(p.mark_id),
               p.remark_of ? ("re-mark of " + std::to_string(*p.remark_of) + "  ").c_str() : "",
               p.serials.empty() ? "" : (serials_text(p.serials) + "  ").c_str(), text.c_str(),
-              std::string(to_string(p.outcome)).c_str(), p.mark_time_s);
+              std::string(p.outcome_name()).c_str(), p.mark_time_s);
   if (p.quality)
     std::printf(", quality %s (max deviation %.1f µm, coverage %.2f %%)",
                 std::string(to_string(classify(*p.quality))).c_str(), p.quality->max_deviation_um,
@@ -52,7 +52,7 @@ void print_stop(const PartResult& p, long long index) {
   const bool interrupted = p.outcome == JobOutcome::aborted && interrupt_flag().requested();
   std::fprintf(stderr, "marker: part %lld (id %lld) %s: %s%s\n", index,
                static_cast<long long>(p.mark_id),
-               interrupted ? "interrupted" : std::string(to_string(p.outcome)).c_str(),
+               interrupted ? "interrupted" : std::string(p.outcome_name()).c_str(),
                p.message.c_str(),
                p.serials.empty() || p.remark_of
                    ? ""
@@ -106,11 +106,11 @@ void print_record(const PartResult& p, long long index) {
   if (p.recorded.journaled)
     std::fprintf(stderr, "marker: part %lld (id %lld): outcome %s kept in the outcome journal %s; the store did not "
                          "take it (%s): it is recorded at the station's next start\n",
-                 index, static_cast<long long>(p.mark_id), std::string(to_string(p.outcome)).c_str(),
+                 index, static_cast<long long>(p.mark_id), std::string(p.outcome_name()).c_str(),
                  p.recorded.journal.c_str(), p.recorded.error.c_str());
   else
     std::fprintf(stderr, "marker: part %lld (id %lld): outcome %s NOT recorded: %s\n", index,
-                 static_cast<long long>(p.mark_id), std::string(to_string(p.outcome)).c_str(),
+                 static_cast<long long>(p.mark_id), std::string(p.outcome_name()).c_str(),
                  p.record_error.c_str());
 }
 
@@ -180,9 +180,10 @@ int run_mark_job(const MarkJobArgs& a) {
     }
     print_record(p, i);
     if (!p.note.empty()) std::fprintf(stderr, "marker: warning: part %lld: %s\n", i, p.note.c_str());
-    if (p.outcome != JobOutcome::done) {
+    if (!p.good()) {
       print_stop(p, i);
-      return p.outcome == JobOutcome::aborted ? kExitInterrupted : 1;
+      // A rejected part exits 2, as `marker code` does for a code that does not read.
+      return p.rejected ? kExitRejected : p.outcome == JobOutcome::aborted ? kExitInterrupted : 1;
     }
     if (!p.recorded.stored && !p.recorded.journaled) return 1;  // not even the journal took it
     if (p.pulses && p.pulses->separate_dots() && !warned_dots) {

@@ -47,7 +47,7 @@ nlohmann::json part_line(const PartResult& part) {
   j["remark_of"] = part.remark_of ? nlohmann::json(*part.remark_of) : nlohmann::json();
   j["text"] = part.text();
   j["serials"] = part.serials;
-  j["outcome"] = to_string(part.outcome);
+  j["outcome"] = part.outcome_name();
   j["message"] = part.message;
   j["data_row"] = part.data_row ? nlohmann::json(*part.data_row) : nlohmann::json();
   j["note"] = part.note;

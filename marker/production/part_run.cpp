@@ -6,6 +6,7 @@
 #include "base/error.hpp"
 #include "driver/sim/quality_class.hpp"
 #include "marker/production/part_json.hpp"
+#include "marker/production/part_verdict.hpp"
 #include "marker/store/utc_time.hpp"
 
 namespace mark {
@@ -32,6 +33,10 @@ std::string PartResult::text() const {
   std::string t;
   for (const ObjectText& o : texts) t.append(t.empty() ? "" : "\n").append(o.text);
   return t;
+}
+
+std::string_view PartResult::outcome_name() const {
+  return rejected ? to_string(Outcome::rejected) : to_string(outcome);
 }
 
 PartRunner::PartRunner(const JobFile& job, const JobFonts& fonts,
@@ -171,6 +176,15 @@ PartResult PartRunner::run(PartResult part, std::vector<CompiledJob> compiled,
     throw;
   }
   mirrors_ = part.outcome == JobOutcome::done ? end : device_position();
+  if (part.outcome == JobOutcome::done) {
+    std::vector<std::vector<CodeVerification>> codes;
+    for (const ObjectRun& o : part.objects) codes.push_back(o.result.codes);
+    if (const std::optional<Rejection> r = part_verdict(codes)) {
+      part.rejected = true;
+      part.stopped_object = r->object;
+      part.message = "object " + in_quotes(part.objects[r->object].name) + ": " + r->reason;
+    }
+  }
   summarise(part);
   record(part, options);
   return part;
@@ -185,7 +199,8 @@ void PartRunner::record(PartResult& part, const PartOptions& options) {
   if (options.phase) options.phase(PartPhase::recording, part.serials);
   OutcomeRecord record;
   record.time_utc = format_utc(SystemClock().now());
-  record.outcome = part.outcome == JobOutcome::done      ? Outcome::done
+  record.outcome = part.rejected                         ? Outcome::rejected
+                   : part.outcome == JobOutcome::done    ? Outcome::done
                    : part.outcome == JobOutcome::aborted ? Outcome::aborted
                                                          : Outcome::failed;
   record.message = part.message;

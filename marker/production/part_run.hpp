@@ -10,10 +10,13 @@
 //   2. mark — every object in file order with its own pen (motion and laser settings, passes),
 //      each as one device job (run_compiled_job). The first object that does not end `done`
 //      ends the part: the objects after it are not started.
-//   3. record — the part's outcome (done only if every object is done; else the aborted or
-//      failed object's outcome), with the device's figures and, when the options carry an
-//      evaluator (the simulated scanner's: marker/job/sim_evaluator.hpp), each object's quality,
-//      pulse figures and codes read back. An aborted or failed part's numbers are void for good.
+//   3. verify — a part marked to its end is good only when every code read back decodes to its
+//      data (part_verdict.hpp); else it is rejected, naming the object and why.
+//   4. record — the part's outcome (done only if every object is done and the part verified;
+//      rejected; else the aborted or failed object's outcome), with the device's figures and,
+//      when the options carry an evaluator (the simulated scanner's: marker/job/sim_evaluator.hpp),
+//      each object's quality, pulse figures and codes read back. An aborted, failed or rejected
+//      part's numbers are void for good.
 //
 // A re-mark marks the texts of an earlier row again, in a row of its own linked to it, and
 // consumes no number.
@@ -48,8 +51,11 @@ struct PartResult {
   std::map<std::string, std::int64_t> serials;   // counter values consumed (a re-mark: the original's)
   std::optional<std::int64_t> data_row;          // the data-list row taken (1: the first after the header)
   std::string note;                              // what the store noticed (a clock stepped back)
-  JobOutcome outcome = JobOutcome::done;
-  std::string message;  // aborted / failed: which object stopped where, and why
+  JobOutcome outcome = JobOutcome::done;  // the device's: how far the marking got
+  // Marked to its end but not verified (a code not read back): scrap. The message says which
+  // object failed and why; stopped_object is its index.
+  bool rejected = false;
+  std::string message;  // aborted / failed / rejected: which object, where, and why
   std::optional<std::size_t> stopped_object;     // its index
   std::vector<ObjectRun> objects;
   std::string device;                            // describe().name
@@ -67,6 +73,9 @@ struct PartResult {
   std::string record_error;
 
   std::string text() const;  // the texts joined by new lines
+  bool good() const { return outcome == JobOutcome::done && !rejected; }
+  // As the audit log names it: done, aborted, failed or rejected.
+  std::string_view outcome_name() const;
 };
 
 struct PartOptions {

@@ -87,9 +87,9 @@ MarkAttempt Station::run() {
   if (a.part) {
     const PartResult& part = *a.part;
     ++counts_.parts;
-    ++counts_.outcomes[std::string(to_string(part.outcome))];
+    ++counts_.outcomes[std::string(part.outcome_name())];
     counts_.last = part;
-    emit("part " + std::to_string(part.mark_id) + " " + std::string(to_string(part.outcome)) +
+    emit("part " + std::to_string(part.mark_id) + " " + std::string(part.outcome_name()) +
          (part.message.empty() ? "" : ": " + part.message));
     if (part.outcome == JobOutcome::failed) failure = part.message.empty() ? "the part failed" : part.message;
   } else if (refused) {

@@ -24,7 +24,7 @@ std::string reply_value(std::string_view value) {
 }
 
 std::string part_reply(const PartResult& part) {
-  std::string s = "id=" + std::to_string(part.mark_id) + " outcome=" + std::string(to_string(part.outcome));
+  std::string s = "id=" + std::to_string(part.mark_id) + " outcome=" + std::string(part.outcome_name());
   for (const auto& [name, value] : part.serials) s += " " + name + "=" + std::to_string(value);
   s += " text=" + reply_value(part.text());
   s += " mark_time_s=" + std::to_string(part.mark_time_s);
@@ -85,8 +85,8 @@ std::string station_command(Station& station, std::string_view line) {
       const MarkAttempt a = station.mark();
       if (a.part) {
         const std::string fields = part_reply(*a.part);
-        if (a.part->outcome == JobOutcome::done) return ok(fields);
-        return "ERR " + std::string(to_string(a.part->outcome)) + " " + fields;
+        if (a.part->good()) return ok(fields);
+        return "ERR " + std::string(a.part->outcome_name()) + " " + fields;
       }
       return err(*a.error);
     }

@@ -10,12 +10,13 @@ std::string_view to_string(Outcome o) {
     case Outcome::aborted: return "aborted";
     case Outcome::failed: return "failed";
     case Outcome::reserved: return "reserved";
+    case Outcome::rejected: return "rejected";
   }
   return "?";
 }
 
 std::optional<Outcome> parse_outcome(std::string_view name) {
-  for (Outcome o : {Outcome::done, Outcome::aborted, Outcome::failed, Outcome::reserved})
+  for (Outcome o : {Outcome::done, Outcome::aborted, Outcome::failed, Outcome::reserved, Outcome::rejected})
     if (name == to_string(o)) return o;
   return std::nullopt;
 }

@@ -16,7 +16,9 @@
 
 namespace mark {
 
-enum class Outcome { done, aborted, failed, reserved };
+// rejected: marked to the end, but its verification failed (a code not read back): scrap, its
+// numbers void like an aborted part's.
+enum class Outcome { done, aborted, failed, reserved, rejected };
 
 std::string_view to_string(Outcome o);
 std::optional<Outcome> parse_outcome(std::string_view name);

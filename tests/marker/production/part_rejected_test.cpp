@@ -1,0 +1,100 @@
+// A part is good only when it is verified (issue 20): a code that does not read back off the
+// mark makes the part `rejected` — recorded so in the audit log, its numbers void and never issued
+// again, the run stopped with exit status 2 — while the same job at a speed whose code reads ends
+// `done` and goes on from the next number.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "marker/production/part_verdict.hpp"
+#include "tests/marker/cli_runner.hpp"
+
+namespace mark {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A Data Matrix of dots on SL14: at 1000 mm/s the dots are too small to read (coverage 14 %,
+// no reader decodes it); squares at 300 mm/s read.
+std::string code_job(double speed_mm_s, const std::string& style) {
+  std::ostringstream j;
+  j << R"({"format": "marker-job/1", "head": "SL14", "counters": {"serial": {"start": 41, "width": 6}},
+           "pens": {"code": {"speed_mm_s": )"
+    << speed_mm_s << R"(}}, "objects": [{"name": "udi", "kind": "code", "pen": "code",
+           "symbology": "datamatrix", "template": "SN{serial}", "module_mm": 0.25, "style": ")"
+    << style << R"("}]})";
+  return j.str();
+}
+
+fs::path write(const fs::path& dir, const std::string& name, const std::string& text) {
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+TEST(PartVerdict, AnyCodeThatDoesNotDecodeToItsDataRejectsThePartNamingIt) {
+  CodeVerification read, unread, misread;
+  read.decoded = read.data_match = true;
+  unread.decided_by = "any two";
+  unread.modules_wrong = 113;
+  misread.decoded = true;
+  misread.decoded_data = "SN41";
+  misread.expected_data = "SN42";
+  EXPECT_FALSE(part_verdict({{}, {read}}));
+  const auto r = part_verdict({{read}, {read, unread}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->object, 1u);
+  EXPECT_EQ(r->reason, "code 2 not decoded by any two (modules wrong: 113)");
+  EXPECT_EQ(part_verdict({{misread}})->reason, "code 1 read as \"SN41\", not \"SN42\" (modules wrong: 0)");
+}
+
+TEST(PartRejected, ACodeThatDoesNotReadIsRejectedItsNumberVoidAndTheRunStops) {
+  const fs::path dir = test::fresh_temp_dir("marker_part_rejected");
+  const std::string store = (dir / "s.sqlite").string();
+  const fs::path bad = write(dir, "bad.json", code_job(1000, "dot"));
+  const test::CliResult r = test::run_cli({"mark", "--job", bad.string(), "--count", "3", "--store", store,
+                                           "--create-counters", "--virtual-time", "--json"});
+  EXPECT_EQ(r.code, 2) << r.err;
+  // One part, not three: the run stops at the rejected one.
+  std::istringstream lines(r.out);
+  std::string line;
+  std::vector<nlohmann::json> parts;
+  while (std::getline(lines, line)) parts.push_back(nlohmann::json::parse(line));
+  ASSERT_EQ(parts.size(), 1u) << r.out;
+  EXPECT_EQ(parts[0]["outcome"], "rejected");
+  EXPECT_EQ(parts[0]["objects"][0]["outcome"], "done");  // the device marked it all
+  EXPECT_FALSE(parts[0]["objects"][0]["codes"][0]["data_match"].get<bool>());
+  EXPECT_NE(parts[0]["message"].get<std::string>().find("object \"udi\": code 1 not decoded"), std::string::npos);
+  EXPECT_NE(r.err.find("rejected: object \"udi\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("its numbers are void (serial=41)"), std::string::npos) << r.err;
+
+  // The same code in squares at 300 mm/s reads: done, and the next number is 42 (41 stays void).
+  const fs::path good = write(dir, "good.json", code_job(300, "square"));
+  const test::CliResult g = test::run_cli({"mark", "--job", good.string(), "--count", "2", "--store", store,
+                                           "--virtual-time", "--json"});
+  EXPECT_EQ(g.code, 0) << g.err;
+  std::istringstream good_lines(g.out);
+  std::vector<std::int64_t> serials;
+  while (std::getline(good_lines, line)) {
+    const nlohmann::json p = nlohmann::json::parse(line);
+    EXPECT_EQ(p["outcome"], "done");
+    serials.push_back(p["serials"]["serial"].get<std::int64_t>());
+  }
+  EXPECT_EQ(serials, (std::vector<std::int64_t>{42, 43}));
+
+  // The audit log says so, row by row.
+  const test::CliResult log = test::run_cli({"log", "--store", store, "--json"});
+  ASSERT_EQ(log.code, 0) << log.err;
+  std::istringstream rows(log.out);
+  std::vector<std::string> outcomes;
+  while (std::getline(rows, line)) {
+    const nlohmann::json row = nlohmann::json::parse(line);
+    if (row["kind"] == "mark") outcomes.push_back(row["outcome"].get<std::string>());
+  }
+  EXPECT_EQ(outcomes, (std::vector<std::string>{"rejected", "done", "done"}));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace mark

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <thread>
 
 #include "ringbuffer/laser_delay_line.hpp"
@@ -228,11 +229,18 @@ TEST(Drain, StopRequestPutsTheLaserOutWithinOneBlockOfTheRequest) {
     drain.start();
     while (drain.samples_out() < 1234) std::this_thread::sleep_for(std::chrono::microseconds(130));
     stop.request();
+    const std::int64_t published_ns = StopFlag::now_ns();
     const DrainStats st = drain.join();
     EXPECT_EQ(st.end, DrainEnd::cancelled);
     EXPECT_TRUE(sink.halted);
     EXPECT_GE(st.stop_sample, 1234u);
-    EXPECT_LE(st.stop_latency_samples, block) << "block " << block;
+    // The request's time is taken before its flag is published; a preemption in between (seen
+    // under ThreadSanitizer on a loaded machine) is time the drain could not have seen it.
+    const double publish_gap_samples =
+        static_cast<double>(published_ns - stop.requested_at_ns()) * 1e-9 * DrainOptions{}.rate_hz;
+    EXPECT_LE(static_cast<double>(st.stop_latency_samples),
+              static_cast<double>(block) + std::ceil(publish_gap_samples))
+        << "block " << block << ", publishing took " << publish_gap_samples << " samples";
     EXPECT_GE(st.stop_latency_us, 0.0);
     ASSERT_EQ(sink.samples.size(), st.stop_sample + 1);
     EXPECT_EQ(st.stop_sample % block, 0u);  // stopped at a block boundary, not mid-block

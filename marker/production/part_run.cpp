@@ -5,6 +5,7 @@
 
 #include "base/error.hpp"
 #include "driver/sim/quality_class.hpp"
+#include "marker/production/object_clearance.hpp"
 #include "marker/production/part_json.hpp"
 #include "marker/production/part_verdict.hpp"
 #include "marker/store/utc_time.hpp"
@@ -83,6 +84,7 @@ std::vector<CompiledJob> PartRunner::compile(const std::vector<ObjectText>& text
     }
     if (!compiled.back().plan.commands.empty()) home = compiled.back().plan.commands.back().end();
   }
+  check_objects_apart(job_, compiled);
   return compiled;
 }
 

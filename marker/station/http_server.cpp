@@ -1,6 +1,6 @@
 #include "marker/station/http_server.hpp"
 
-#include <httplib.h>
+#include <sys/socket.h>
 
 #include <charconv>
 #include <thread>
@@ -11,6 +11,8 @@
 #include "marker/station/operator_page.hpp"
 #include "marker/station/station_json.hpp"
 #include "marker/store/audit_format.hpp"
+// Last: it brings <resolv.h>, whose `_res` macro breaks Eigen's headers included after it.
+#include <httplib.h>
 
 namespace mark {
 namespace {
@@ -149,8 +151,9 @@ void HttpServer::Impl::routes() {
   });
 }
 
-// One `data: JSON` per event from the moment the client connected; a comment line every 10 s
-// without one, so a client gone is noticed. Ends (the chunked stream finished cleanly) when the
+// One `data: JSON` per event from the moment the client connected, after a first comment line
+// (`: station events`) that tells the client it is subscribed; a comment line every 10 s without
+// an event, so a client gone is noticed. Ends (the chunked stream finished cleanly) when the
 // server stops.
 void HttpServer::Impl::stream_events(httplib::Response& res) {
   res.set_header("Cache-Control", "no-cache");
@@ -158,7 +161,11 @@ void HttpServer::Impl::stream_events(httplib::Response& res) {
   std::uint64_t seq = stream->end();
   int quiet = 0;
   res.set_chunked_content_provider(
-      "text/event-stream", [stream, seq, quiet](std::size_t, httplib::DataSink& sink) mutable {
+      "text/event-stream", [stream, seq, quiet](std::size_t offset, httplib::DataSink& sink) mutable {
+        if (offset == 0) {
+          constexpr std::string_view kHello = ": station events\n\n";
+          return sink.write(kHello.data(), kHello.size());
+        }
         const auto data = stream->next(seq, std::chrono::milliseconds(500));
         if (stream->closed()) {
           sink.done();
@@ -184,6 +191,12 @@ HttpServer::HttpServer(Station& station, const ListenAddress& address, std::func
   Impl& d = *impl_;
   d.server.new_task_queue = [] { return new httplib::ThreadPool(kHttpThreads); };
   d.server.set_payload_max_length(kHttpBodyMax);
+  // cpp-httplib's default also sets SO_REUSEPORT, which lets a second station bind the same
+  // port and take half the connections: SO_REUSEADDR only (a restart may rebind at once).
+  d.server.set_socket_options([](int fd) {
+    const int one = 1;
+    ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+  });
   d.server.set_keep_alive_timeout(2);
   // HTTP/1.1 (RFC 9112 §6.3): a request with neither Content-Length nor Transfer-Encoding has
   // an empty body. cpp-httplib 0.11 reads such a POST to the connection's end instead (`curl -X

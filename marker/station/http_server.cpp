@@ -198,6 +198,7 @@ HttpServer::HttpServer(Station& station, const ListenAddress& address, std::func
     ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
   });
   d.server.set_keep_alive_timeout(2);
+  d.server.set_tcp_nodelay(true);  // a reply is one response: no waiting for an ACK to send it
   // HTTP/1.1 (RFC 9112 §6.3): a request with neither Content-Length nor Transfer-Encoding has
   // an empty body. cpp-httplib 0.11 reads such a POST to the connection's end instead (`curl -X
   // POST` waits 5 s, then 400): say so before it reads.

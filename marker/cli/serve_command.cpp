@@ -65,8 +65,8 @@ int serve(const ServeArgs& a) {
   const StationState was = station.abort();
   log_line(std::string("stopping (state ") + std::string(to_string(was)) + ")");
   server.stop();
-  if (http) http->stop();
   station.wait_idle();
+  if (http) http->stop();  // after the part ended: the event stream tells it before it closes
   log_line("stopped");
   return 0;
 }

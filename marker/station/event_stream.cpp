@@ -36,7 +36,8 @@ std::uint64_t EventStream::end() const {
 std::optional<std::string> EventStream::next(std::uint64_t& seq, std::chrono::milliseconds timeout) {
   std::unique_lock lock(mutex_);
   published_.wait_for(lock, timeout, [&] { return closed_ || seq < first_ + kept_.size(); });
-  if (closed_ || seq >= first_ + kept_.size()) return std::nullopt;
+  // Closed: what was published before still goes out (the part a stopping station aborted).
+  if (seq >= first_ + kept_.size()) return std::nullopt;
   if (seq < first_) seq = first_;
   return kept_[static_cast<std::size_t>(seq++ - first_)];
 }

@@ -2,7 +2,7 @@
 // The station's events for the HTTP event stream (GET /api/events): one JSON line per state
 // change and per part that ended, numbered, kept for readers that are a little behind. A reader
 // waits for the next number without polling the station; close() wakes every reader at once
-// (the server stopping), so no stream outlives the server.
+// (the server stopping): each gets what was published before, then the end.
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
@@ -25,7 +25,8 @@ class EventStream {
   // The number the next published event gets: a new reader starts here (only what follows).
   std::uint64_t end() const;
   // Event `seq` (or the oldest kept, if `seq` is gone): its data, `seq` advanced past it.
-  // Nothing when `timeout` passed without one or the stream closed.
+  // Nothing when `timeout` passed without one, or the stream closed and the reader has had
+  // every event.
   std::optional<std::string> next(std::uint64_t& seq, std::chrono::milliseconds timeout);
 
  private:

@@ -55,6 +55,8 @@ struct HttpServer::Impl {
   std::function<void(const std::string&)> log;
   // Shared with the station's listener, which may outlive the server (a part ending after stop).
   std::shared_ptr<EventStream> events = std::make_shared<EventStream>();
+  // Event streams being sent: stop() lets them end (their last events out) before it stops.
+  std::shared_ptr<std::atomic<int>> open_streams = std::make_shared<std::atomic<int>>(0);
   httplib::Server server;
   std::thread thread;
   int port = 0;
@@ -160,6 +162,7 @@ void HttpServer::Impl::stream_events(httplib::Response& res) {
   std::shared_ptr<EventStream> stream = events;
   std::uint64_t seq = stream->end();
   int quiet = 0;
+  ++*open_streams;
   res.set_chunked_content_provider(
       "text/event-stream", [stream, seq, quiet](std::size_t offset, httplib::DataSink& sink) mutable {
         if (offset == 0) {
@@ -167,7 +170,7 @@ void HttpServer::Impl::stream_events(httplib::Response& res) {
           return sink.write(kHello.data(), kHello.size());
         }
         const auto data = stream->next(seq, std::chrono::milliseconds(500));
-        if (stream->closed()) {
+        if (!data && stream->closed()) {
           sink.done();
           return true;
         }
@@ -183,7 +186,8 @@ void HttpServer::Impl::stream_events(httplib::Response& res) {
           return true;
         }
         return sink.write(chunk.data(), chunk.size());
-      });
+      },
+      [open = open_streams](bool) { --*open; });
 }
 
 HttpServer::HttpServer(Station& station, const ListenAddress& address, std::function<void(const std::string&)> log)
@@ -250,6 +254,8 @@ int HttpServer::port() const { return impl_->port; }
 void HttpServer::stop() {
   Impl& d = *impl_;
   d.events->close();
+  // The streams send what is left and end; a client that does not read is cut off by stop().
+  for (int i = 0; i < 200 && *d.open_streams > 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
   d.server.stop();
   if (d.thread.joinable()) d.thread.join();
 }

@@ -88,13 +88,7 @@ TEST(StationHttp, StatusPreviewVarsAndMarkReturnThePartWithSerials) {
   EXPECT_EQ(log.body[0]["outcome"], "done");
   EXPECT_EQ(call(*c, "GET", "/api/log").body.size(), 2u);
 
-  const auto rows = s.close();
-  ASSERT_EQ(rows.size(), 1u);
-  EXPECT_EQ(rows[0].id, 2);
-  EXPECT_EQ(rows[0].mark.serials.at("serial"), 41);
-  EXPECT_EQ(rows[0].text(), "SN 000041 LOT A17");
-  ASSERT_TRUE(rows[0].outcome);
-  EXPECT_EQ(rows[0].outcome->outcome, Outcome::done);
+  test::expect_one_part(s.close(), 2, 41, Outcome::done, "SN 000041 LOT A17");
 }
 
 // Four clients POST /api/mark at the same instant, round after round: one part at a time, every
@@ -131,17 +125,8 @@ TEST(StationHttp, FourConcurrentMarksOneMarksTheRestBusy) {
   EXPECT_EQ(ok + busy, kClients * kRounds);
   EXPECT_GE(ok.load(), kRounds);  // at least one part per round
   EXPECT_GT(busy.load(), 0);
-  const auto rows = s.close();
-  ASSERT_EQ(rows.size(), static_cast<std::size_t>(ok.load()));
-  std::set<std::int64_t> stored;
-  for (const AuditRow& r : rows) {
-    ASSERT_TRUE(r.outcome);
-    EXPECT_EQ(r.outcome->outcome, Outcome::done);
-    stored.insert(r.mark.serials.at("serial"));
-  }
-  EXPECT_EQ(stored, replied);
-  EXPECT_EQ(*stored.begin(), 41);  // consecutive: a refused trigger consumed nothing
-  EXPECT_EQ(*stored.rbegin(), 41 + ok.load() - 1);
+  EXPECT_EQ(replied.size(), static_cast<std::size_t>(ok.load()));
+  test::expect_rows_are_the_replies(s.close(), replied);
 }
 
 // In real time a part lasts long enough to abort it from a second client: the waiting POST gets
@@ -171,11 +156,7 @@ TEST(StationHttp, AbortMidMarkRecordsThePartAborted) {
   EXPECT_EQ(last->objects[0].result.outcome, JobOutcome::aborted);
   EXPECT_EQ(call(*c, "GET", "/api/status").body["state"], "idle");
   EXPECT_EQ(call(*c, "GET", "/api/serial/serial").body["next"], 42);
-  const auto rows = s.close();
-  ASSERT_EQ(rows.size(), 1u);
-  ASSERT_TRUE(rows[0].outcome);
-  EXPECT_EQ(rows[0].outcome->outcome, Outcome::aborted);
-  EXPECT_EQ(rows[0].mark.serials.at("serial"), 41);
+  test::expect_one_part(s.close(), 2, 41, Outcome::aborted);
 }
 
 // The event stream: `marking`, then the part, then `idle`, one `data:` JSON each, and the

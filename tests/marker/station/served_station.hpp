@@ -12,6 +12,7 @@
 #include <atomic>
 #include <fstream>
 #include <memory>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -121,5 +122,35 @@ struct Served {
     std::filesystem::remove_all(dir);
   }
 };
+
+// The store's rows are one part, `id`, that ended `outcome` with serial `serial` (and `text`
+// when given).
+inline void expect_one_part(const std::vector<AuditRow>& rows, std::int64_t id, std::int64_t serial, Outcome outcome,
+                            const std::string& text = {}) {
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].id, id);
+  EXPECT_EQ(rows[0].mark.serials.at("serial"), serial);
+  if (!text.empty()) {
+    EXPECT_EQ(rows[0].text(), text);
+  }
+  ASSERT_TRUE(rows[0].outcome);
+  EXPECT_EQ(rows[0].outcome->outcome, outcome);
+}
+
+// The store holds exactly one done row per part a client was told was done, with the serials
+// the clients were told, consecutive from the job's start (a refused trigger consumed nothing).
+inline void expect_rows_are_the_replies(const std::vector<AuditRow>& rows, const std::set<std::int64_t>& replied) {
+  ASSERT_EQ(rows.size(), replied.size());
+  std::set<std::int64_t> stored;
+  for (const AuditRow& r : rows) {
+    ASSERT_TRUE(r.outcome);
+    EXPECT_EQ(r.outcome->outcome, Outcome::done);
+    stored.insert(r.mark.serials.at("serial"));
+  }
+  EXPECT_EQ(stored, replied);
+  ASSERT_FALSE(stored.empty());
+  EXPECT_EQ(*stored.begin(), 41);
+  EXPECT_EQ(*stored.rbegin(), 41 + static_cast<std::int64_t>(stored.size()) - 1);
+}
 
 }  // namespace mark::test

@@ -27,13 +27,7 @@ TEST(StationTcp, MarkRepliesWithRenderedTextSerialAndOutcome) {
   EXPECT_EQ(r.substr(0, 58), "OK id=2 outcome=done serial=41 text=\"SN 000041 LOT A17\" ma") << r;
   EXPECT_EQ(c.ask("SERIAL serial"), "OK serial=42");
   EXPECT_EQ(c.ask("STATUS").substr(0, 17), "OK state=idle job");
-  const auto rows = s.close();
-  ASSERT_EQ(rows.size(), 1u);
-  EXPECT_EQ(rows[0].id, 2);
-  EXPECT_EQ(rows[0].mark.serials.at("serial"), 41);
-  EXPECT_EQ(rows[0].text(), "SN 000041 LOT A17");
-  ASSERT_TRUE(rows[0].outcome);
-  EXPECT_EQ(rows[0].outcome->outcome, Outcome::done);
+  test::expect_one_part(s.close(), 2, 41, Outcome::done, "SN 000041 LOT A17");
 }
 
 // Four clients trigger at once, many times: one part at a time, every other trigger `busy`;
@@ -68,18 +62,7 @@ TEST(StationTcp, FourClientsOneMarkAtATimeNoSerialRepeated) {
   EXPECT_EQ(other.load(), 0);
   ASSERT_GT(ok.load(), 0);
   EXPECT_EQ(replied.size(), static_cast<std::size_t>(ok.load()));  // no serial replied twice
-  const auto rows = s.close();
-  ASSERT_EQ(rows.size(), static_cast<std::size_t>(ok.load()));
-  std::set<std::int64_t> stored;
-  for (const AuditRow& r : rows) {
-    ASSERT_TRUE(r.outcome);
-    EXPECT_EQ(r.outcome->outcome, Outcome::done);
-    stored.insert(r.mark.serials.at("serial"));
-  }
-  EXPECT_EQ(stored, replied);
-  // Consecutive from the start: nothing consumed by a refused trigger.
-  EXPECT_EQ(*stored.begin(), 41);
-  EXPECT_EQ(*stored.rbegin(), 41 + ok.load() - 1);
+  test::expect_rows_are_the_replies(s.close(), replied);
 }
 
 // In real time a part takes long enough to abort it: the laser goes off, the part is recorded
@@ -99,11 +82,7 @@ TEST(StationTcp, AbortMidMarkRecordsThePartAborted) {
   ASSERT_FALSE(last->objects.empty());
   EXPECT_EQ(last->objects[0].result.outcome, JobOutcome::aborted);
   EXPECT_EQ(c.ask("SERIAL serial"), "OK serial=42");
-  const auto rows = s.close();
-  ASSERT_EQ(rows.size(), 1u);
-  ASSERT_TRUE(rows[0].outcome);
-  EXPECT_EQ(rows[0].outcome->outcome, Outcome::aborted);
-  EXPECT_EQ(rows[0].mark.serials.at("serial"), 41);
+  test::expect_one_part(s.close(), 2, 41, Outcome::aborted);
 }
 
 TEST(StationTcp, LimitsAnswerErrAndChangeNothing) {

@@ -14,12 +14,12 @@ body{font:16px system-ui,sans-serif;margin:1.5em;max-width:48em}
 .idle{background:#cfc}.marking{background:#ffc}.paused{background:#ddd}.error{background:#fcc}
 pre{background:#f4f4f4;padding:.5em;font-size:1.3em;white-space:pre-wrap}
 button{font-size:1.3em;margin-right:.5em;padding:.3em 1em}
-table{border-collapse:collapse}td{padding:.1em .8em .1em 0}
+table{border-collapse:collapse}td,th{padding:.1em .8em .1em 0;text-align:left}
 #message{color:#a00}
 </style></head><body>
 <h1>marker station</h1>
 <div>State: <span id="state">…</span> &nbsp; job <code id="job"></code></div>
-<p><button id="mark">Mark</button><button id="abort">Abort</button><button id="reset">Reset</button></p>
+<p><button id="mark">Mark</button><button id="abort">Abort</button><button id="pause">Pause</button><button id="reset">Reset</button></p>
 <p id="message"></p>
 <h2>Next mark</h2><pre id="next">…</pre>
 <h2>Last part</h2>
@@ -29,6 +29,8 @@ table{border-collapse:collapse}td{padding:.1em .8em .1em 0}
 <tr><td>mark time</td><td id="last_time">–</td></tr></table>
 <pre id="last_text">–</pre>
 <h2>Counts</h2><div id="counts">–</div>
+<h2>Last 50 marks</h2>
+<table id="log"><thead><tr><th>id</th><th>time (UTC)</th><th>text</th><th>serials</th><th>outcome</th></tr></thead><tbody></tbody></table>
 <script>
 "use strict";
 const $ = id => document.getElementById(id);
@@ -56,9 +58,21 @@ async function refresh() {
     showPart(s.body.last);
     if (s.body.error) $("message").textContent = "error: " + s.body.error;
   }
+  if (s.ok) $("pause").textContent = s.body.state === "paused" ? "Resume" : "Pause";
   if (s.ok && s.body.state !== "marking") {
     const n = await api("GET", "/api/preview");
     $("next").textContent = n.ok ? n.body.text : "(" + n.body.error + ")";
+    const l = await api("GET", "/api/log?limit=50");
+    if (l.ok) showLog(l.body);
+  }
+}
+function showLog(rows) {
+  const body = $("log").tBodies[0];
+  body.textContent = "";
+  for (const r of rows.filter(r => r.kind === "mark" || r.kind === "remark").reverse()) {
+    const tr = body.insertRow();
+    const serials = Object.entries(r.serials || {}).map(([k, v]) => k + "=" + v).join(" ");
+    for (const v of [r.id, r.time_utc, r.text, serials, r.outcome || "open"]) tr.insertCell().textContent = v;
   }
 }
 async function command(path) {
@@ -70,6 +84,7 @@ async function command(path) {
 $("mark").onclick = () => command("/api/mark?async=1");
 $("abort").onclick = () => command("/api/abort");
 $("reset").onclick = () => command("/api/reset");
+$("pause").onclick = () => command($("pause").textContent === "Resume" ? "/api/resume" : "/api/pause");
 const events = new EventSource("/api/events");
 events.onmessage = m => {
   const e = JSON.parse(m.data);

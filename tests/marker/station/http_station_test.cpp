@@ -270,6 +270,38 @@ TEST(StationHttp, BadRequestsAnswer4xxJsonAndChangeNothing) {
   EXPECT_EQ(s.close().size(), 0u);
 }
 
+// The operator page is served whole from the binary, calls only endpoints that exist, and its
+// script is JavaScript that Node.js (an engine we did not write) parses. It is not run in a
+// browser here (a headless-browser test is future work).
+TEST(StationHttp, OperatorPageIsServedAndItsScriptParses) {
+  Served s;
+  httplib::Client c("127.0.0.1", s.http_port());
+  const auto page = c.Get("/");
+  ASSERT_TRUE(page);
+  EXPECT_EQ(page->status, 200);
+  EXPECT_EQ(page->get_header_value("Content-Type"), "text/html; charset=utf-8");
+  const std::string& html = page->body;
+  for (const char* id : {"id=\"state\"", "id=\"mark\"", "id=\"abort\"", "id=\"pause\"", "id=\"reset\"", "id=\"next\"",
+                         "id=\"last_text\"", "id=\"last_serials\"", "id=\"log\"", "new EventSource(\"/api/events\")"})
+    EXPECT_NE(html.find(id), std::string::npos) << id;
+  EXPECT_EQ(html.find("http://"), std::string::npos);  // nothing fetched from elsewhere
+  EXPECT_EQ(html.find("https://"), std::string::npos);
+  // Every endpoint the script calls answers (not 404).
+  for (const char* path : {"/api/status", "/api/preview", "/api/log?limit=50"}) {
+    EXPECT_NE(html.find(std::string("\"") + path + "\""), std::string::npos) << path;
+    EXPECT_EQ(c.Get(path)->status, 200) << path;
+  }
+  const std::size_t from = html.find("<script>"), to = html.find("</script>");
+  ASSERT_NE(from, std::string::npos);
+  ASSERT_NE(to, std::string::npos);
+  if (std::system("node --version > /dev/null 2>&1") != 0) GTEST_SKIP() << "node (Debian nodejs) is not installed";
+  const auto script = std::filesystem::temp_directory_path() / ("operator-page-" + std::to_string(::getpid()) + ".js");
+  std::ofstream(script) << html.substr(from + 8, to - from - 8);
+  const int rc = std::system(("node --check " + script.string()).c_str());
+  std::filesystem::remove(script);
+  EXPECT_EQ(rc, 0) << "node --check found a syntax error in the operator page's script";
+}
+
 TEST(StationHttp, ListensOnLoopbackOnlyAndRefusesAPortInUse) {
   try {
     parse_listen_address("192.168.1.5:8080", "--http");

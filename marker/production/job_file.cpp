@@ -306,6 +306,7 @@ JobFile parse_job(std::string_view text, const std::string& source) {
       o.fail(pen_key, "missing: the job has several pens, say which one draws this object");
     }
     obj.body = parse_object_body(obj.kind, o, ctx);
+    obj.require = parse_requirement(o, obj.code() != nullptr);
     o.finish();
     {
       const TextTemplate& t = obj.text_template();

@@ -13,6 +13,7 @@
 #include "driver/sim/head_model.hpp"
 #include "marker/codes/code_object.hpp"
 #include "marker/fill/fill_options.hpp"
+#include "marker/job/mark_requirement.hpp"
 #include "marker/layout/layout.hpp"
 #include "marker/plan/pen.hpp"
 #include "marker/plan/stroke_order.hpp"
@@ -61,6 +62,7 @@ struct JobObject {
   std::string kind = "text";
   std::string pen;
   ObjectBody body;
+  MarkRequirement require;  // "require": what its mark must be to count as good
 
   const TextObject* text() const { return std::get_if<TextObject>(&body); }
   const CodeJobObject* code() const { return std::get_if<CodeJobObject>(&body); }
@@ -103,6 +105,8 @@ JobFile read_job_file(const std::string& path, std::string* bytes = nullptr);
 class JsonReader;
 struct JobParseContext;
 ObjectBody parse_object_body(const std::string& kind, JsonReader& object, const JobParseContext& ctx);
+// An object's "require" (nothing asked when absent); a code grade needs a code object.
+MarkRequirement parse_requirement(JsonReader& object, bool is_code);
 std::vector<std::string> object_kind_names();
 
 }  // namespace mark

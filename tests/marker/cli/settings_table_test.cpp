@@ -165,7 +165,7 @@ std::map<std::string, SettingRef> declared_keys() {
 const std::set<std::string> kStructure = {
     "format", "name", "shifts[].code", "shifts[].start", "variables.NAME", "counters", "pens", "objects",
     "head.model", "data", "data.file", "data.delimiter", "objects[].kind", "objects[].symbology", "objects[].fill", "objects[].hatch",
-    "objects[].fill.sets", "objects[].hatch.sets", "pens.NAME", "counters.NAME",
+    "objects[].fill.sets", "objects[].hatch.sets", "pens.NAME", "counters.NAME", "objects[].require",
 };
 // Declared for a place that does not read it: a code's hatch fills square modules, where the fill
 // rule makes no difference.
@@ -180,9 +180,9 @@ constexpr const char* kEveryReader = R"({
   "pens": {"p": {"speed_mm_s": 500}},
   "objects": [
     {"name": "t", "pen": "p", "template": "{sn} {var:lot} {shift}", "circle": {"radius_mm": 20},
-     "fill": {"sets": [{"angle_deg": 0}]}},
+     "fill": {"sets": [{"angle_deg": 0}]}, "require": {"quality": "good"}},
     {"name": "c", "kind": "code", "pen": "p", "symbology": "datamatrix", "template": "{sn}",
-     "hatch": {"sets": [{"angle_deg": 0}]}}
+     "hatch": {"sets": [{"angle_deg": 0}]}, "require": {"code": "read", "code_grade": "C"}}
   ]
 })";
 
@@ -220,6 +220,7 @@ std::string job_with(const std::string& place, const std::string& key, const std
   const std::string item = "\"" + key.substr(key.rfind('.') + 1) + "\": " + value;
   if (key.starts_with("head.")) head = ", " + item;
   else if (key.starts_with("circle.")) circle = ", " + item;
+  else if (key.starts_with("require.")) object = ", \"require\": {" + item + "}";
   else if (place == "pens.NAME") pen = ", " + item;
   else if (place == "objects[]") object = ", " + item;
   else top = ", " + item;

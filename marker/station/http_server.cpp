@@ -27,7 +27,7 @@ constexpr std::size_t kHttpThreads = 16;
 
 void reply(httplib::Response& res, int status, const json& body) {
   res.status = status;
-  res.set_content(body.dump(), "application/json");
+  res.set_content(json_text(body), "application/json");
 }
 
 void refuse(httplib::Response& res, const StationError& e) { reply(res, http_status(e.code), error_json(e)); }
@@ -219,7 +219,7 @@ HttpServer::HttpServer(Station& station, const ListenAddress& address, std::func
     else if (res.status == 413) why = "the request body is over " + std::to_string(kHttpBodyMax) + " bytes";
     else if (res.status == 414) why = "the request line is too long";
     else why = "the request was refused (HTTP " + std::to_string(res.status) + ")";
-    res.set_content(json{{"error", why}}.dump(), "application/json");
+    res.set_content(json_text(json{{"error", why}}), "application/json");
   });
   d.server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
     std::string why = "internal error";
@@ -236,7 +236,7 @@ HttpServer::HttpServer(Station& station, const ListenAddress& address, std::func
       if (req.method != "GET" || res.status >= 400)
         log("http " + req.method + " " + req.path.substr(0, 128) + " " + std::to_string(res.status));
     });
-  station.add_listener([stream = d.events](const StationEvent& e) { stream->publish(event_json(e).dump()); });
+  station.add_listener([stream = d.events](const StationEvent& e) { stream->publish(json_text(event_json(e))); });
 
   const std::string where = address.host + ":" + std::to_string(address.port);
   d.port = address.port == 0 ? d.server.bind_to_any_port(address.host)

@@ -30,6 +30,10 @@ nlohmann::json preview_json(const std::vector<ObjectText>& texts, const std::map
   return j;
 }
 
+std::string json_text(const nlohmann::json& value) {
+  return value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 nlohmann::json error_json(const StationError& e) { return {{"error", e.message}, {"code", e.code}}; }
 
 int http_status(const std::string& code) {

@@ -23,6 +23,10 @@ nlohmann::json event_json(const StationEvent& event);
 // {"serials": {counter: value}, "text": joined with \n, "objects": [{"name", "text"}]}
 nlohmann::json preview_json(const std::vector<ObjectText>& texts, const std::map<std::string, std::int64_t>& serials);
 
+// The text of an answer. Bytes that are not UTF-8 (a request's path or value echoed in an error)
+// become U+FFFD instead of throwing: an answer is always written.
+std::string json_text(const nlohmann::json& value);
+
 // {"error": message, "code": code}
 nlohmann::json error_json(const StationError& error);
 

@@ -257,6 +257,9 @@ TEST(StationHttp, BadRequestsAnswer4xxJsonAndChangeNothing) {
   expect_error("POST", "/api/mark", "{\"lot\": 1}", 400, "POST /api/mark takes no body");
   expect_error("POST", "/api/mark?async=yes", "", 400, "POST /api/mark: async takes 1");
   expect_error("GET", "/api/serial/nope", "", 404, "SERIAL nope: the job uses no counter of that name");
+  // Bytes that are not UTF-8, echoed in the error (found by fuzz_station_http): still a JSON answer.
+  expect_error("GET", "/api/\xaa\xaa/log", "", 404, "no endpoint GET /api/\xef\xbf\xbd\xef\xbf\xbd/log");
+  expect_error("PUT", "/api/vars/l\xff", "A", 400, "");
   EXPECT_EQ(call(*c, "POST", "/api/pause").body["state"], "paused");
   const Reply paused = call(*c, "POST", "/api/mark");
   EXPECT_EQ(paused.status, 409);

@@ -163,19 +163,18 @@ nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobOptions&
 }
 
 void print_summary(const JobSpec& spec, const JobResult& r, const std::string& device) {
-  std::printf("marked %zu glyphs (%zu strokes, %zu commands) on %s, %s corners, %.0f mm/s\n",
-              r.glyphs, r.strokes, r.commands, device.c_str(),
+  // A mark that stopped did not mark its glyphs: it was planned with them (print_stop says where).
+  std::printf("%s %zu glyphs (%zu strokes, %zu commands) on %s, %s corners, %.0f mm/s\n",
+              r.outcome == JobOutcome::done ? "marked" : "planned", r.glyphs, r.strokes, r.commands, device.c_str(),
               std::string(to_string(spec.pen.corner)).c_str(), spec.pen.mark_speed_mm_s);
   std::printf("mark time %.4f s (device), %llu samples, compile %.1f µs, jumps %.1f mm, "
               "underruns %llu\n",
               r.mark_time_s, static_cast<unsigned long long>(r.samples), r.compile_time_s * 1e6,
               r.jump_length_mm, static_cast<unsigned long long>(r.drain.underrun_events));
   if (r.quality)
-    std::printf("quality: %s — max deviation %.1f µm, rms %.1f µm, coverage %.2f %%, dose ratio "
-                "%.2f, overshoot %.1f µm\n",
-                std::string(to_string(classify(*r.quality))).c_str(), r.quality->max_deviation_um,
-                r.quality->rms_deviation_um, 100 * r.quality->coverage, r.quality->dose_ratio_max,
-                r.quality->overshoot_um);
+    std::printf("quality: %s — %s, rms %.1f µm, overshoot %.1f µm\n",
+                std::string(to_string(classify(*r.quality))).c_str(), quality_figures(*r.quality).c_str(),
+                r.quality->rms_deviation_um, r.quality->overshoot_um);
   if (r.pulses)
     std::printf("pulses: %.1f µm apart at %.0f kHz on a %.0f µm spot, overlap %.0f %%%s\n",
                 r.pulses->spacing_max_um, r.pulses->frequency_khz, r.pulses->spot_diameter_um,
@@ -351,10 +350,8 @@ int run_mark(const MarkArgs& a) {
       std::fprintf(stderr, "marker: warning: code %zu (%s) does not read back off the simulated mark\n", k + 1,
                    std::string(to_string(spec.codes[k].spec.symbology)).c_str());
   if (r.quality && classify(*r.quality) == QualityClass::poor)
-    std::fprintf(stderr,
-                 "marker: warning: poor mark predicted (max deviation %.1f µm, coverage %.2f %%, "
-                 "dose ratio %.2f): lower --speed\n",
-                 r.quality->max_deviation_um, 100 * r.quality->coverage, r.quality->dose_ratio_max);
+    std::fprintf(stderr, "marker: warning: poor mark predicted (%s): lower --speed\n",
+                 quality_figures(*r.quality).c_str());
   if (r.pulses && r.pulses->separate_dots())
     std::fprintf(stderr,
                  "marker: warning: pulses land %.1f µm apart on a %.0f µm spot: lit strokes show "

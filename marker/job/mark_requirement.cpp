@@ -1,7 +1,5 @@
 #include "marker/job/mark_requirement.hpp"
 
-#include <cstdio>
-
 #include "marker/job/sim_evaluator.hpp"
 
 namespace mark {
@@ -17,18 +15,8 @@ std::string why_not_read(const CodeVerification& v, std::size_t k) {
 std::optional<std::string> quality_shortfall(const Quality& q, QualityClass wanted) {
   const QualityClass got = classify(q);
   if (got >= wanted) return std::nullopt;
-  // The dose ratio is max / median: with most of the strokes unlit the median is 0 and the
-  // figure a sentinel (quality.hpp), which says less than the words.
-  char dose[64];
-  if (q.dose_ratio_max >= 1e9)
-    std::snprintf(dose, sizeof dose, "most of the strokes got no dose");
-  else
-    std::snprintf(dose, sizeof dose, "dose ratio %.2f", q.dose_ratio_max);
-  char msg[240];
-  std::snprintf(msg, sizeof msg, "quality %s, below %s (max deviation %.1f µm, coverage %.2f %%, %s)",
-                std::string(to_string(got)).c_str(), std::string(to_string(wanted)).c_str(), q.max_deviation_um,
-                100 * q.coverage, dose);
-  return msg;
+  return "quality " + std::string(to_string(got)) + ", below " + std::string(to_string(wanted)) + " (" +
+         quality_figures(q) + ")";
 }
 
 JobOptions prediction_options() {

@@ -18,6 +18,7 @@
 #include "marker/plan/pen.hpp"
 #include "marker/plan/stroke_order.hpp"
 #include "marker/vars/counter.hpp"
+#include "marker/vars/date_codes.hpp"
 #include "marker/vars/shifts.hpp"
 #include "marker/vars/text_template.hpp"
 #include "marker/vars/time_zone.hpp"
@@ -86,6 +87,7 @@ struct JobFile {
   ShiftTable shifts;
   std::map<std::string, std::string> variables;  // defaults; --set overrides
   std::map<std::string, CounterSpec> counters;
+  std::map<std::string, DateCodeTable> date_codes;  // {datecode:NAME} tables of the job
   std::optional<JobDataList> data;
   std::map<std::string, JobPen> pens;
   std::vector<JobObject> objects;

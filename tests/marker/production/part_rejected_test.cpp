@@ -77,6 +77,11 @@ TEST(PartVerdict, AnObjectBelowItsRequiredQualityIsRejectedNamingTheClass) {
   // Within "good"'s limits (30 µm, 98 %, dose ratio 2): met.
   poor.quality->max_deviation_um = 25;
   EXPECT_FALSE(part_verdict({{&spec, &poor, good}}));
+  // Most strokes unlit: the dose ratio's median is 0 and its value a sentinel; the words say so.
+  poor.quality->coverage = 0.3;
+  poor.quality->dose_ratio_max = 1e9;
+  EXPECT_EQ(part_verdict({{&spec, &poor, good}})->reason,
+            "quality poor, below good (max deviation 25.0 µm, coverage 30.00 %, most of the strokes got no dose)");
   // A device without an evaluator gives no figures: nothing to fall short of.
   const JobResult blind;
   EXPECT_FALSE(part_verdict({{&spec, &blind, good}}));

@@ -3,7 +3,11 @@
 // folder, `marker serve`'s parts (JobSource → Station → TcpServer) in process, one client
 // sending MARK back to back.
 //
-//   station_tcp [--parts N] [--real-time]
+//   station_tcp [--parts N] [--real-time] [--http]
+//
+// --http: an HttpServer on the same station too, and an httplib::Client (keep-alive) sending
+// POST /api/mark after each MARK, alternately, so both see the same store and machine load;
+// then STATUS against GET /api/status (the adapters alone, without a part).
 //
 // Prints per MARK: the round trip (client's send to the reply line), and trigger to first
 // sample = round trip − (the part's wall time from its first sample in the line memory to its
@@ -26,7 +30,10 @@
 #include <vector>
 
 #include "marker/cli/serve_source.hpp"
+#include "marker/station/http_server.hpp"
 #include "marker/station/tcp_server.hpp"
+// Last: it brings <resolv.h>, whose `_res` macro breaks Eigen's headers included after it.
+#include <httplib.h>
 
 namespace {
 
@@ -42,6 +49,30 @@ double quantile(std::vector<double> v, double q) {
   return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
 }
 
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// One command line to the station and its reply line ("" when the connection ended).
+std::string ask(int fd, std::string& buf, const std::string& command) {
+  const std::string line = command + "\n";
+  ::send(fd, line.data(), line.size(), MSG_NOSIGNAL);
+  std::size_t nl;
+  while ((nl = buf.find('\n')) == std::string::npos) {
+    char chunk[4096];
+    const ssize_t n = ::recv(fd, chunk, sizeof chunk, 0);
+    if (n <= 0) return "";
+    buf.append(chunk, static_cast<std::size_t>(n));
+  }
+  std::string reply = buf.substr(0, nl);
+  buf.erase(0, nl + 1);
+  return reply;
+}
+
+void print(const char* what, const std::vector<double>& ms, const char* note = "") {
+  std::printf("  %-26s median %.3f ms  p99 %.3f ms%s\n", what, quantile(ms, 0.5), quantile(ms, 0.99), note);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -50,12 +81,14 @@ int main(int argc, char** argv) {
   bool real_time = false;
   app.add_option("--parts", parts, "MARKs to send")->check(CLI::Range(2, 1'000'000));
   app.add_flag("--real-time", real_time, "drain at the scanner's clock (default: virtual time)");
+  bool http = false;
+  app.add_flag("--http", http, "also POST /api/mark after each MARK, and STATUS against GET /api/status");
   CLI11_PARSE(app, argc, argv);
 
   const auto dir = std::filesystem::temp_directory_path() / ("station-bench-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "serial20.json") << kJob;
-  std::vector<double> rtt_ms, first_ms, compile_ms;
+  std::vector<double> rtt_ms, first_ms, compile_ms, http_ms, status_ms, http_status_ms;
   double total_s = 0;
   {
     mark::cli::MarkJobArgs a;
@@ -77,21 +110,21 @@ int main(int argc, char** argv) {
     sa.sin_port = htons(static_cast<std::uint16_t>(server.port()));
     ::inet_pton(AF_INET, "127.0.0.1", &sa.sin_addr);
     if (::connect(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0) return 1;
+    std::unique_ptr<mark::HttpServer> http_server;
+    std::unique_ptr<httplib::Client> client;
+    if (http) {
+      http_server = std::make_unique<mark::HttpServer>(station, mark::parse_listen_address("127.0.0.1:0", "--http"));
+      client = std::make_unique<httplib::Client>("127.0.0.1", http_server->port());
+      client->set_keep_alive(true);
+      client->set_tcp_nodelay(true);
+      client->set_read_timeout(std::chrono::seconds(60));
+    }
     const auto t_all = std::chrono::steady_clock::now();
     std::string buf;
     for (int i = 0; i < parts; ++i) {
-      const auto t0 = std::chrono::steady_clock::now();
-      ::send(fd, "MARK\n", 5, MSG_NOSIGNAL);
-      std::size_t nl;
-      while ((nl = buf.find('\n')) == std::string::npos) {
-        char chunk[4096];
-        const ssize_t n = ::recv(fd, chunk, sizeof chunk, 0);
-        if (n <= 0) return 1;
-        buf.append(chunk, static_cast<std::size_t>(n));
-      }
-      const std::string reply = buf.substr(0, nl);
-      buf.erase(0, nl + 1);
-      const double rtt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      auto t0 = std::chrono::steady_clock::now();
+      const std::string reply = ask(fd, buf, "MARK");
+      const double rtt = ms_since(t0);
       if (reply.rfind("OK ", 0) != 0) {
         std::fprintf(stderr, "station_tcp: part %d: %s\n", i + 1, reply.c_str());
         return 1;
@@ -101,20 +134,42 @@ int main(int argc, char** argv) {
       rtt_ms.push_back(rtt);
       first_ms.push_back(rtt - 1e3 * (r.wall_time_s - r.compile_time_s));
       compile_ms.push_back(1e3 * r.compile_time_s);
+      if (!client) continue;
+      t0 = std::chrono::steady_clock::now();
+      const auto h = client->Post("/api/mark");
+      http_ms.push_back(ms_since(t0));
+      if (!h || h->status != 200) {
+        std::fprintf(stderr, "station_tcp: HTTP part %d: %s\n", i + 1,
+                     h ? h->body.c_str() : httplib::to_string(h.error()).c_str());
+        return 1;
+      }
     }
     total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_all).count();
+    for (int i = 0; client && i < parts; ++i) {
+      auto t0 = std::chrono::steady_clock::now();
+      if (ask(fd, buf, "STATUS").rfind("OK ", 0) != 0) return 1;
+      status_ms.push_back(ms_since(t0));
+      t0 = std::chrono::steady_clock::now();
+      const auto h = client->Get("/api/status");
+      http_status_ms.push_back(ms_since(t0));
+      if (!h || h->status != 200) return 1;
+    }
     ::close(fd);
     stop = true;
     serving.join();
+    if (http_server) http_server->stop();
   }
   std::filesystem::remove_all(dir);
   std::printf("station_tcp: %d parts (%s), 20-character serial \"SN 00000000000000001\"\n", parts,
               real_time ? "real time" : "virtual time");
-  std::printf("  MARK round trip          median %.3f ms  p99 %.3f ms\n", quantile(rtt_ms, 0.5), quantile(rtt_ms, 0.99));
-  std::printf("  trigger to first sample  median %.3f ms  p99 %.3f ms  (upper bound)\n", quantile(first_ms, 0.5),
-              quantile(first_ms, 0.99));
-  std::printf("  of which the object's compile (text to first sample in the line memory)  median %.3f ms  p99 %.3f ms\n",
-              quantile(compile_ms, 0.5), quantile(compile_ms, 0.99));
-  std::printf("  marks per second         %.1f\n", parts / total_s);
+  print("MARK round trip", rtt_ms);
+  print("trigger to first sample", first_ms, "  (upper bound)");
+  print("of which the compile", compile_ms, "  (the object's text to its first sample in the line memory)");
+  std::printf("  marks per second           %.1f%s\n", (http ? 2 : 1) * parts / total_s, http ? " (TCP and HTTP)" : "");
+  if (!http) return 0;
+  print("POST /api/mark round trip", http_ms, "  (alternating with MARK)");
+  std::printf("  HTTP - TCP medians         %.3f ms\n", quantile(http_ms, 0.5) - quantile(rtt_ms, 0.5));
+  print("STATUS round trip", status_ms, "  (no part: the adapters alone)");
+  print("GET /api/status round trip", http_status_ms);
   return 0;
 }

@@ -7,14 +7,15 @@
 # Targets: the stroke-font loaders (jhf, lff, cxf), outline fonts (TrueType / CFF through
 # FreeType), job files, data lists (CSV), the built-in font's glyph script, the PGM and PNG readers, code data (GS1,
 # UDI, the zint wrapper), head profiles, the option-value parsers (numbers, "CX,CY,R", "WxH", --stock, --travel), the camera
-# option (--camera KEY=VALUE,…), and
+# option (--camera KEY=VALUE,…), the station's HTTP requests (station_http: raw bytes to a server on
+# loopback), and
 # the LMC driver's readers (lmc_reply: replies and command words; cor_file: EzCad .cor files and
-# captures). All 16 at the default 20 s run for about five minutes, plus the build.
+# captures). All 18 at the default 20 s run for about five minutes, plus the build.
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${MARKER_FUZZ_BUILD:-$root/build-fuzz}
-all_targets=(jhf lff cxf outline_font job data_list glyph_script pgm png option_values camera_option lmc_reply cor_file code_data head_profile station_line)
+all_targets=(jhf lff cxf outline_font job data_list glyph_script pgm png option_values camera_option lmc_reply cor_file code_data head_profile station_line station_http)
 
 seconds=20
 if [[ ${1:-} =~ ^[0-9]+$ ]]; then
@@ -59,6 +60,7 @@ declare -A seeds=(
   [data_list]="$root/tests/fuzz/seeds/data_list/*"
   [code_data]="$root/tests/fuzz/code_data-seeds/*"
   [head_profile]="$root/tests/fuzz/head_profile-seeds/*.json"
+  [station_http]="$root/tests/fuzz/seeds/station_http/*"
 )
 # Option values and replies are short; the others are files (a .cor table is ~68 kB).
 # lmc_reply reaches a whole list packet (3072 bytes) for the masked link.

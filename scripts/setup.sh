@@ -9,6 +9,8 @@ packages=(
   libusb-1.0-0-dev libcli11-dev nlohmann-json3-dev libpolyclipping-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libsqlite3-dev sqlite3 libpq-dev postgresql   # serial store: SQLite (default) and PostgreSQL (tests start a private server)
+  libcpp-httplib-dev                            # the station's HTTP + JSON interface (marker serve --http)
+  nodejs                                        # parses the operator page's script (StationHttp test)
   libssl-dev                                    # SHA-256 of job files in the audit log (libcrypto)
   libhowardhinnant-date-dev tzdata              # time zones for dates, shifts and counter resets
   libzint-dev libdmtx-dev libzbar-dev libzxing-dev  # 2D codes: zint encodes; ZXing-C++, libdmtx and ZBar decode the simulated mark

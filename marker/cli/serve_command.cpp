@@ -1,9 +1,10 @@
-// `marker serve --job FILE [--device D] [--listen 127.0.0.1:PORT] [--store PATH|URL]
-//  [--station NAME] [--set NAME=VALUE …] [--create-counters] [--virtual-time]
+// `marker serve --job FILE [--device D] [--listen 127.0.0.1:PORT] [--http 127.0.0.1:PORT]
+//  [--store PATH|URL] [--station NAME] [--set NAME=VALUE …] [--create-counters] [--virtual-time]
 //  [--max-connections N]`: the marking station (docs/station.md). Loads the job once, keeps the
-// device open and marks on command over the TCP line protocol (marker/station/). One log line
-// per event on stderr. SIGTERM / Ctrl-C: a part in progress is aborted with the laser off and
-// recorded aborted (its numbers void), every connection is closed, exit 0.
+// device open and marks on command over the TCP line protocol and, with --http, over HTTP +
+// JSON (marker/station/). One log line per event on stderr. SIGTERM / Ctrl-C: a part in progress
+// is aborted with the laser off and recorded aborted (its numbers void), every connection is
+// closed, exit 0.
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -17,6 +18,7 @@
 #include "marker/limits/marking_settings.hpp"
 #include "marker/limits/production_settings.hpp"
 #include "marker/limits/station_settings.hpp"
+#include "marker/station/http_server.hpp"
 #include "marker/station/tcp_server.hpp"
 
 namespace mark::cli {
@@ -25,6 +27,7 @@ namespace {
 struct ServeArgs {
   MarkJobArgs job;
   std::string listen;      // the settings' defaults (add_setting)
+  std::string http;        // empty: no HTTP interface
   int max_connections = 0;
 };
 
@@ -45,9 +48,17 @@ void log_line(const std::string& event) {
 
 int serve(const ServeArgs& a) {
   const ListenAddress address = parse_listen_address(a.listen, "--listen");
+  std::optional<ListenAddress> http_address;
+  if (!a.http.empty()) http_address = parse_listen_address(a.http, "--http");
   JobSource source(a.job);
   Station station(source, log_line);
   TcpServer server(station, address, a.max_connections, log_line);
+  std::unique_ptr<HttpServer> http;
+  if (http_address) {
+    http = std::make_unique<HttpServer>(station, *http_address, log_line);
+    log_line("http on " + http_address->host + ":" + std::to_string(http->port()) + " (operator page: http://" +
+             http_address->host + ":" + std::to_string(http->port()) + "/)");
+  }
   log_line("listening on " + address.host + ":" + std::to_string(server.port()) + " job " + a.job.job);
   server.serve([] { return interrupt_flag().requested(); });
   // SIGTERM: the laser off and a part in progress recorded aborted before anything closes.
@@ -55,6 +66,7 @@ int serve(const ServeArgs& a) {
   log_line(std::string("stopping (state ") + std::string(to_string(was)) + ")");
   server.stop();
   station.wait_idle();
+  if (http) http->stop();  // after the part ended: the event stream tells it before it closes
   log_line("stopped");
   return 0;
 }
@@ -70,6 +82,7 @@ Command make_serve_command() {
         sub->add_option("--job", p.job, "the job file the station marks")->required();
         add_setting(*sub, kDevice, p.device);
         add_setting(*sub, kListen, a->listen);
+        add_setting(*sub, kHttp, a->http);
         add_setting(*sub, kMaxConnections, a->max_connections);
         add_setting(*sub, kSet, p.sets);
         add_setting(*sub, kStation, p.station);

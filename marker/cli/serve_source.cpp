@@ -96,6 +96,12 @@ std::optional<std::int64_t> JobSource::next_serial(const std::string& counter) {
   return store_->status(counter, &it->second, loaded_->job.shifts, SystemClock().now()).next;
 }
 
+void JobSource::read_log(const AuditFilter& filter, const std::function<bool(const AuditRow&)>& row) {
+  std::lock_guard lock(log_mutex_);
+  if (!log_store_) log_store_ = open_production_store(args_.store, StoreAccess::read_only);
+  log_store_->read_log(filter, row);
+}
+
 void JobSource::load(const std::string& job) {
   auto next = open_job(job, {});  // the old job stays until the new one is ready
   loaded_ = std::move(next);

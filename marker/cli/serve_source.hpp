@@ -3,6 +3,7 @@
 // store, through PartRunner (allocate → mark → record), the same path as `marker mark --job`.
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 
 #include "marker/cli/device_factory.hpp"
@@ -27,6 +28,9 @@ class JobSource : public PartSource {
   std::optional<std::int64_t> next_serial(const std::string& counter) override;
   void load(const std::string& job) override;
   std::string job() const override { return args_.job; }
+  // Through a read-only open of the store of its own (a snapshot, as `marker log`), opened at the
+  // first read: the station's connection stays the marking thread's alone.
+  void read_log(const AuditFilter& filter, const std::function<bool(const AuditRow&)>& row) override;
 
  private:
   struct Loaded;  // a job file with its fonts, variables and runner
@@ -38,6 +42,8 @@ class JobSource : public PartSource {
   std::string device_spec_;
   std::unique_ptr<Loaded> loaded_;
   PartOptions options_;
+  std::mutex log_mutex_;  // the log reader is shared by every HTTP request
+  std::unique_ptr<SerialStore> log_store_;
 };
 
 }  // namespace mark::cli

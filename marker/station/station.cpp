@@ -31,6 +31,29 @@ void Station::emit(const std::string& line) const {
   if (log_) log_(line);
 }
 
+void Station::notify(const StationEvent& event) const {
+  for (const auto& listener : listeners_) listener(event);
+}
+
+void Station::enter(StationState to) {
+  state_ = to;
+  emit("state " + std::string(to_string(to)));
+  notify(StationEvent{to, std::nullopt});
+}
+
+void Station::add_listener(std::function<void(const StationEvent&)> listener) {
+  std::lock_guard lock(mutex_);
+  listeners_.push_back(std::move(listener));
+}
+
+void PartSource::read_log(const AuditFilter&, const std::function<bool(const AuditRow&)>&) {
+  throw InputError("this station keeps no audit log");
+}
+
+void Station::read_log(const AuditFilter& filter, const std::function<bool(const AuditRow&)>& row) {
+  source_.read_log(filter, row);
+}
+
 // Everything but STATUS and ABORT uses the source, which a running part holds: refused busy.
 // Paused and error refuse only what would mark; the others apply.
 std::optional<StationError> Station::refuse_unless_still() const {
@@ -48,8 +71,7 @@ std::optional<StationError> Station::begin() {
   }
   if (async_.joinable()) async_.join();  // the last asynchronous part ended (state idle)
   stop_.reset();  // an ABORT from now on stops this part
-  state_ = StationState::marking;
-  emit("state marking");
+  enter(StationState::marking);
   return std::nullopt;
 }
 
@@ -95,13 +117,14 @@ MarkAttempt Station::run() {
   } else if (refused) {
     emit("mark refused: " + a.error->message);
   }
+  if (a.part) notify(StationEvent{failure.empty() ? StationState::idle : StationState::error, a.part});
   if (!failure.empty()) {
-    state_ = StationState::error;
     counts_.error = failure;
+    state_ = StationState::error;
     emit("state error: " + failure);
+    notify(StationEvent{StationState::error, std::nullopt});
   } else {
-    state_ = StationState::idle;
-    emit("state idle");
+    enter(StationState::idle);
   }
   ended_.notify_all();
   return a;
@@ -124,8 +147,7 @@ std::optional<StationError> Station::hold(StationState to) {
   std::lock_guard lock(mutex_);
   if (state_ == StationState::marking) return busy();
   if (state_ == StationState::error) return StationError{"error", "the station is in error: RESET first"};
-  if (state_ != to) emit("state " + std::string(to_string(to)));
-  state_ = to;
+  if (state_ != to) enter(to);
   return std::nullopt;
 }
 
@@ -138,9 +160,9 @@ std::optional<StationError> Station::reset() {
     return StationError{"error", std::string("the device did not reset: ") + e.what()};
   }
   if (state_ == StationState::error) {
-    state_ = StationState::idle;
     counts_.error.clear();
-    emit("reset: state idle");
+    emit("reset");
+    enter(StationState::idle);
   }
   return std::nullopt;
 }

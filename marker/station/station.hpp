@@ -51,6 +51,10 @@ class PartSource {
   // Another job file on the same device and store. Throws InputError and keeps the old one.
   virtual void load(const std::string& job) = 0;
   virtual std::string job() const = 0;
+  // The store's audit log, as `marker log` reads it: matching rows in id order, `row` returns
+  // false to stop. Must not wait for a part being marked (a read-only snapshot of its own), so
+  // the station calls it at any time; a source without a log throws InputError.
+  virtual void read_log(const AuditFilter& filter, const std::function<bool(const AuditRow&)>& row);
 };
 
 // A refused or failed request: `code` is one word (busy, paused, error, refused, …).
@@ -63,6 +67,13 @@ struct StationError {
 struct MarkAttempt {
   std::optional<PartResult> part;
   std::optional<StationError> error;
+};
+
+// What an interface that pushes events (the HTTP event stream) is told: the state the station
+// entered, or a part that ended (its state change follows as its own event).
+struct StationEvent {
+  StationState state = StationState::idle;
+  std::optional<PartResult> part;  // set: a part ended (state: the state it ended in)
 };
 
 struct StationStatus {
@@ -99,6 +110,12 @@ class Station {
                                       std::map<std::string, std::int64_t>& serials);
   std::optional<StationError> next_serial(const std::string& counter, std::optional<std::int64_t>& next);
 
+  // The store's audit log (PartSource::read_log), at any time: never waits for a part.
+  void read_log(const AuditFilter& filter, const std::function<bool(const AuditRow&)>& row);
+  // `listener` is told every state change and every part that ended, in order, from the thread
+  // that caused it and under the station's lock: it must return quickly and not call back.
+  void add_listener(std::function<void(const StationEvent&)> listener);
+
   StationStatus status() const;
   // Blocks until no part runs (an asynchronous one included).
   void wait_idle();
@@ -109,9 +126,12 @@ class Station {
   std::optional<StationError> refuse_unless_still() const;  // lock held
   std::optional<StationError> hold(StationState to);        // pause / resume
   void emit(const std::string& line) const;
+  void notify(const StationEvent& event) const;  // lock held
+  void enter(StationState to);                   // lock held: the state, logged and notified
 
   PartSource& source_;
   std::function<void(const std::string&)> log_;
+  std::vector<std::function<void(const StationEvent&)>> listeners_;
   mutable std::mutex mutex_;
   std::condition_variable ended_;
   StationState state_ = StationState::idle;

@@ -8,43 +8,12 @@
 
 #include "base/error.hpp"
 #include "fuzz_check.hpp"
+#include "fuzz_station_source.hpp"
 #include "marker/station/station_commands.hpp"
 #include "marker/station/tcp_server.hpp"
 
 using mark::fuzz::broken;
-
-namespace {
-
-class NullSource : public mark::PartSource {
- public:
-  mark::PartResult mark_next(const mark::StopFlag&) override {
-    mark::PartResult p;
-    p.mark_id = ++n;
-    p.serials["sn"] = n;
-    p.texts.push_back({"o", "SN " + std::to_string(n), true});
-    p.recorded.stored = true;
-    return p;
-  }
-  void abort_device() noexcept override {}
-  void reset_device() override {}
-  void set_variable(const std::string& name, const std::string&) override {
-    if (name != "lot") throw mark::InputError("no template uses {var:" + name + "}");
-  }
-  std::vector<mark::ObjectText> preview(std::map<std::string, std::int64_t>* s) override {
-    (*s)["sn"] = n + 1;
-    return {{"o", "SN", true}};
-  }
-  std::optional<std::int64_t> next_serial(const std::string& c) override {
-    if (c != "sn") throw mark::InputError("no counter " + c);
-    return n + 1;
-  }
-  void load(const std::string& job) override { name_ = job; }
-  std::string job() const override { return name_; }
-  std::int64_t n = 0;
-  std::string name_ = "fuzz.json";
-};
-
-}  // namespace
+using mark::fuzz::NullSource;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -1,0 +1,103 @@
+#include "marker/station/operator_page.hpp"
+
+namespace mark {
+
+// It listens to /api/events (no polling) and re-reads /api/status and /api/preview when an
+// event arrives; the buttons POST to the same endpoints an MES uses.
+std::string_view operator_page_html() {
+  static constexpr std::string_view kPage = R"html(<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>marker station</title>
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<style>
+body{font:16px system-ui,sans-serif;margin:1.5em;max-width:48em}
+#state{font-size:2em;font-weight:bold;padding:.2em .6em;border-radius:.3em;display:inline-block}
+.idle{background:#cfc}.marking{background:#ffc}.paused{background:#ddd}.error{background:#fcc}
+pre{background:#f4f4f4;padding:.5em;font-size:1.3em;white-space:pre-wrap}
+button{font-size:1.3em;margin-right:.5em;padding:.3em 1em}
+table{border-collapse:collapse}td,th{padding:.1em .8em .1em 0;text-align:left}
+#message{color:#a00}
+</style></head><body>
+<h1>marker station</h1>
+<div>State: <span id="state">…</span> &nbsp; job <code id="job"></code></div>
+<p><button id="mark">Mark</button><button id="abort">Abort</button><button id="pause">Pause</button><button id="reset">Reset</button></p>
+<p id="message"></p>
+<h2>Next mark</h2><pre id="next">…</pre>
+<h2>Last part</h2>
+<table><tr><td>id</td><td id="last_id">–</td></tr>
+<tr><td>outcome</td><td id="last_outcome">–</td></tr>
+<tr><td>serials</td><td id="last_serials">–</td></tr>
+<tr><td>mark time</td><td id="last_time">–</td></tr></table>
+<pre id="last_text">–</pre>
+<h2>Counts</h2><div id="counts">–</div>
+<h2>Last 50 marks</h2>
+<table id="log"><thead><tr><th>id</th><th>time (UTC)</th><th>text</th><th>serials</th><th>outcome</th></tr></thead><tbody></tbody></table>
+<script>
+"use strict";
+const $ = id => document.getElementById(id);
+async function api(method, path) {
+  const r = await fetch(path, {method});
+  let body = {};
+  try { body = await r.json(); } catch (e) {}
+  return {ok: r.ok, status: r.status, body};
+}
+function showPart(p) {
+  if (!p) return;
+  $("last_id").textContent = p.mark_id;
+  $("last_outcome").textContent = p.outcome + (p.message ? " (" + p.message + ")" : "");
+  $("last_serials").textContent = Object.entries(p.serials || {}).map(([k, v]) => k + " = " + v).join(", ") || "–";
+  $("last_time").textContent = p.mark_time_s !== undefined ? p.mark_time_s.toFixed(3) + " s" : "–";
+  $("last_text").textContent = p.text;
+}
+async function refresh() {
+  const s = await api("GET", "/api/status");
+  if (s.ok) {
+    $("state").textContent = s.body.state; $("state").className = s.body.state;
+    $("job").textContent = s.body.job;
+    $("counts").textContent = s.body.parts + " parts: " +
+      Object.entries(s.body.outcomes).map(([k, v]) => v + " " + k).join(", ");
+    showPart(s.body.last);
+    if (s.body.error) $("message").textContent = "error: " + s.body.error;
+  }
+  if (s.ok) $("pause").textContent = s.body.state === "paused" ? "Resume" : "Pause";
+  if (s.ok && s.body.state !== "marking") {
+    const n = await api("GET", "/api/preview");
+    $("next").textContent = n.ok ? n.body.text : "(" + n.body.error + ")";
+    const l = await api("GET", "/api/log?limit=50");
+    if (l.ok) showLog(l.body);
+  }
+}
+function showLog(rows) {
+  const body = $("log").tBodies[0];
+  body.textContent = "";
+  for (const r of rows.filter(r => r.kind === "mark" || r.kind === "remark").reverse()) {
+    const tr = body.insertRow();
+    const serials = Object.entries(r.serials || {}).map(([k, v]) => k + "=" + v).join(" ");
+    for (const v of [r.id, r.time_utc, r.text, serials, r.outcome || "open"]) tr.insertCell().textContent = v;
+  }
+}
+async function command(path) {
+  $("message").textContent = "";
+  const r = await api("POST", path);
+  if (!r.ok) $("message").textContent = r.body.error || ("HTTP " + r.status);
+  refresh();
+}
+$("mark").onclick = () => command("/api/mark?async=1");
+$("abort").onclick = () => command("/api/abort");
+$("reset").onclick = () => command("/api/reset");
+$("pause").onclick = () => command($("pause").textContent === "Resume" ? "/api/resume" : "/api/pause");
+const events = new EventSource("/api/events");
+events.onmessage = m => {
+  const e = JSON.parse(m.data);
+  $("state").textContent = e.state; $("state").className = e.state;
+  if (e.part) showPart(e.part);
+  if (e.state !== "marking") refresh();
+};
+events.onerror = () => { $("message").textContent = "connection to the station lost; retrying"; };
+events.onopen = () => { $("message").textContent = ""; refresh(); };
+refresh();
+</script></body></html>
+)html";
+  return kPage;
+}
+
+}  // namespace mark

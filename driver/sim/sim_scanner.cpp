@@ -35,6 +35,7 @@ SimScanner::SimScanner(SimScannerOptions options)
   if (!(h.tau_s > 0) || !(h.max_speed_mm_s > 0) || !(h.max_accel_mm_s2 > 0) || !(h.field_mm > 0))
     throw DeviceError("simulated scanner: head " + h.name +
                       " needs positive tau, speed and acceleration limits and field");
+  if (h.second_order) servo_step_ = second_order_step(h.omega_n(), h.zeta, options_.tick_s / options_.substeps);
 }
 
 DeviceDescription SimScanner::describe() const {
@@ -227,17 +228,25 @@ void SimScanner::laser_off() noexcept {
 }
 
 // One sub-step of one axis: the servo asks for the velocity that closes the tracking error in
-// τ (first order) or the acceleration of the (ωn, ζ) loop (second order); the mirror can
+// τ (first order, the command held over the sub-step) or the step of the (ωn, ζ) loop (second
+// order, exact for the command moving at `rate`: second_order_step.hpp); the mirror can
 // deliver neither faster than the speed and acceleration limits. The first-order demand also
 // respects the braking curve √(2·a·|e|) so a saturated jump stops without overshoot.
-void SimScanner::step_axis(Axis& a, double cmd, double dt) const {
+void SimScanner::step_axis(Axis& a, double cmd, double rate, double dt) const {
   const HeadModel& h = options_.head;
   const double e = cmd - a.x;
   const double dv_max = h.max_accel_mm_s2 * dt;
   if (h.second_order) {
-    const double wn = h.omega_n();
-    const double acc = wn * wn * e - 2 * h.zeta * wn * a.v;
-    a.v += std::clamp(acc * dt, -dv_max, dv_max);
+    // The loop's exact step (stable for every ζ); where it would ask more than the mirror's
+    // acceleration or speed, the mirror moves as far towards it as the limits allow.
+    double x1 = a.x, v1 = a.v;
+    servo_step_.apply(x1, v1, cmd, rate);
+    if (std::abs(v1 - a.v) <= dv_max && std::abs(v1) <= h.max_speed_mm_s) {
+      a.x = x1;
+      a.v = v1;
+      return;
+    }
+    a.v += std::clamp(v1 - a.v, -dv_max, dv_max);
   } else {
     double want = e / h.tau_s;
     const double brake = std::sqrt(2 * h.max_accel_mm_s2 * std::abs(e));
@@ -252,6 +261,7 @@ void SimScanner::follow(const ScanSample& s) {
   const int n = options_.substeps;
   const double dt = options_.tick_s / n;
   const Vec2 from = cmd_, to{s.x_mm, s.y_mm};
+  const Vec2 rate = (1 / options_.tick_s) * (to - from);  // the command's speed over this tick
   const double target_power = s.laser ? s.power / 255.0 : 0.0;
   // First-order laser power p → target: after a sub-step p moves by `rise` of the gap, and its
   // mean over the sub-step is target + (p − target)·`mean_share` (exact; both 1/0 when instant).
@@ -269,8 +279,8 @@ void SimScanner::follow(const ScanSample& s) {
     // Command at the start of this sub-step (first-order hold from the previous sample).
     const Vec2 cmd = from + (static_cast<double>(j) / n) * (to - from);
     const Vec2 p0 = beam();
-    step_axis(axis_[0], cmd.x, dt);
-    step_axis(axis_[1], cmd.y, dt);
+    step_axis(axis_[0], cmd.x, rate.x, dt);
+    step_axis(axis_[1], cmd.y, rate.y, dt);
     const Vec2 p1 = beam();
     pulses_.step(p0, p1, dt, target_power > 0);
 

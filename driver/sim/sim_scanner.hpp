@@ -40,6 +40,7 @@
 #include "driver/sim/head_model.hpp"
 #include "driver/sim/lit_paths.hpp"
 #include "driver/sim/pulse_train.hpp"
+#include "driver/sim/second_order_step.hpp"
 #include "driver/sim/sim_trace.hpp"
 #include "driver/vec2.hpp"
 #include "ringbuffer/scan_sample.hpp"
@@ -107,12 +108,13 @@ class SimScanner : public SampleDevice<ScanSample> {
   void laser_off() noexcept;
   void check_block(std::span<const ScanSample> block) const;
   void follow(const ScanSample& s);
-  void step_axis(Axis& a, double cmd, double dt) const;
+  void step_axis(Axis& a, double cmd, double rate, double dt) const;
   void record_lit(Vec2 p0, Vec2 p1, bool lit);
   [[noreturn]] void fail(DeviceFault fault);
   void publish_status();
 
   SimScannerOptions options_;
+  SecondOrderStep servo_step_;  // the second-order servo's exact sub-step (unused by first order)
   Axis axis_[2];
   Vec2 cmd_{0, 0};           // previous command (start of the current tick)
   bool laser_cmd_ = false;

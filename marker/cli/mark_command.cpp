@@ -1,6 +1,6 @@
 // `marker mark TEXT [layout options] [--fill hatch …] [--code SYMBOLOGY:DATA --code-…]
 //  [--device sim|lmc[:SERIAL]|lmc-capture:FILE] [--head SL10|SL14|cheap|SA14]
-//  [--head-model first|second] [--laser-rise-us US] [--corner blanking|delays|none]
+//  [--head-model first|second] [--laser-rise-us US] [--plant K=V,…] [--corner blanking|delays|none]
 //  [--speed MM_S|auto] [--lookahead] [--feed-forward] [--head-profile FILE] [pen parameters]
 //  [--power PCT] [--frequency KHZ] [--pulse-width NS] [--preview FILE.png] [--dose-png FILE.png]
 //  [--virtual-time] [--json] [--inject KIND@N] [--trace FILE.csv] [--require-quality high|good]
@@ -41,6 +41,7 @@
 #include "marker/cli/option_values.hpp"
 #include "marker/cli/output_options.hpp"
 #include "marker/cli/pen_options.hpp"
+#include "marker/cli/plant_option.hpp"
 #include "marker/codes/code_data.hpp"
 #include "marker/codes/code_json.hpp"
 #include "marker/job/auto_speed.hpp"
@@ -147,6 +148,7 @@ nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobOptions&
   j["head"] = spec.head.name;
   j["head_model"] = spec.head.second_order ? "second" : "first";
   j["laser_rise_us"] = a.head.laser_rise_us;
+  j["plant"] = plant_text(parse_plant_option(a.head.plant));
   j["lookahead"] = spec.pen.lookahead || spec.pen.feed_forward();
   j["feed_forward"] = spec.pen.feed_forward();
   j["device"] = device_name;
@@ -311,10 +313,13 @@ int run_mark(const MarkArgs& a) {
   sim_settings.fault_at = inject.device_fault_at;
   sim_settings.trace = !a.trace.empty();
   sim_settings.laser_rise_s = a.head.laser_rise_us * 1e-6;
+  sim_settings.plant = parse_plant_option(a.head.plant);
   sim_settings.virtual_time = a.virtual_time;
   const OpenedDevice opened = open_device(a.device, spec, sim_settings, a.lmc);
   const std::unique_ptr<Device>& device = opened.device;
   const SimScanner* scanner = opened.simulator ? &opened.simulator->scanner() : nullptr;
+  if (!scanner && !sim_settings.plant.is_model())
+    throw InputError("--plant '" + a.head.plant + "': a real board drives its own head; the plant is the simulated one's");
   if (!scanner && (!a.preview.empty() || !a.dose_png.empty() || !a.trace.empty()))
     throw InputError("--preview, --dose-png and --trace need a simulated scanner (--device sim or lmc-emulated)");
 

@@ -14,9 +14,13 @@ struct Plant {
   // Second order only: ωn × this at the same ramp lag (so ζ × this too); a first-order servo has
   // no ωn and ignores it.
   double wn_scale = 1;
-  // Servo dead time: the loop sees each command this much later (rounded to the sub-step, 1 µs
-  // at the default tick). The laser is not delayed.
+  // Servo dead time, inside the loop: the servo acts on the shaft's position and speed as they
+  // were this long ago (sensor and computation latency), so its ramp lag becomes τ − dead on a
+  // first-order loop and its transients ring. Rounded to the sub-step (1 µs at the default tick).
   double dead_us = 0;
+  // Command latency, outside the loop: the servo sees every command this much later (the whole
+  // response shifted in time). Rounded to the sub-step. The laser is delayed by neither.
+  double latency_us = 0;
   // Mirror resonance (the mirror twisting against the motor shaft, which the servo measures):
   // mirror − shaft = r, r̈ + 2ζr·ωr·ṙ + ωr²·r = −(shaft acceleration); zero lag on a ramp, it
   // rings wherever the servo accelerates. 0 Hz: none.
@@ -34,7 +38,7 @@ struct Plant {
 
   // True when it adds nothing to the preset.
   bool is_model() const {
-    return tau_scale == 1 && wn_scale == 1 && dead_us == 0 && resonance_hz == 0 && accel_max_mm_s2 == 0 &&
+    return tau_scale == 1 && wn_scale == 1 && dead_us == 0 && latency_us == 0 && resonance_hz == 0 && accel_max_mm_s2 == 0 &&
            noise_um == 0 && quant_bits == 0;
   }
 };

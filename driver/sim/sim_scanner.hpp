@@ -114,7 +114,7 @@ class SimScanner : public SampleDevice<ScanSample> {
   void laser_off() noexcept;
   void check_block(std::span<const ScanSample> block) const;
   void follow(const ScanSample& s);
-  void step_axis(Axis& a, double cmd, double rate, double dt) const;
+  void step_axis(Axis& a, const Axis& seen, double cmd, double rate, double dt) const;
   void record_lit(Vec2 p0, Vec2 p1, bool lit);
   [[noreturn]] void fail(DeviceFault fault);
   void publish_status();
@@ -124,6 +124,11 @@ class SimScanner : public SampleDevice<ScanSample> {
   SecondOrderStep servo_step_;  // the second-order servo's exact sub-step (unused by first order)
   Axis axis_[2];
   CommandHistory commands_;     // the samples, quantised, as the (delayed) servo sees them
+  // The plant's dead time: per axis, the shaft at the start of each of the last dead_substeps_
+  // sub-steps (sized by the constructor), the oldest at dead_at_.
+  int dead_substeps_ = 0;
+  std::vector<Axis> dead_ring_[2];
+  std::size_t dead_at_ = 0;
   MirrorResonance resonance_;
   BeamNoise noise_;
   Vec2 offset_{0, 0};           // the beam's offset from the shaft: twist + noise

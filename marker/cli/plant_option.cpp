@@ -25,7 +25,11 @@ const std::vector<PlantKey>& plant_keys() {
        [](const Plant& p) { return p.wn_scale; },
        "second-order servo: ωn × this at the same ramp lag (ζ × this); a first-order servo ignores it"},
       {{"dead_us", &kPlantDeadRange}, [](Plant& p, double v) { p.dead_us = v; },
-       [](const Plant& p) { return p.dead_us; }, "servo dead time (rounded to the 1 µs sub-step; the laser is not delayed)"},
+       [](const Plant& p) { return p.dead_us; },
+       "servo dead time inside the loop: it acts on the position as it was this long ago (1 µs steps)"},
+      {{"latency_us", &kPlantDeadRange}, [](Plant& p, double v) { p.latency_us = v; },
+       [](const Plant& p) { return p.latency_us; },
+       "command latency outside the loop: the response shifted this much later (1 µs steps; the laser is not)"},
       {{"resonance_hz", &kPlantResonanceRange}, [](Plant& p, double v) { p.resonance_hz = v; },
        [](const Plant& p) { return p.resonance_hz; }, "mirror resonance against the motor shaft (0: none)"},
       {{"resonance_zeta", &kPlantResonanceZetaRange}, [](Plant& p, double v) { p.resonance_zeta = v; },
@@ -59,8 +63,10 @@ std::string plant_text(const Plant& plant) {
   std::string out;
   const Plant model;
   for (const PlantKey& k : plant_keys())
-    if (k.get(plant) != k.get(model))
-      out += (out.empty() ? "" : ",") + std::string(k.key.name) + "=" + exact_number(k.get(plant));
+    if (k.get(plant) != k.get(model)) {
+      if (!out.empty()) out += ',';
+      out.append(k.key.name).append("=").append(exact_number(k.get(plant)));
+    }
   return out;
 }
 
@@ -68,8 +74,8 @@ std::string plant_keys_help() {
   std::string out;
   const Plant model;
   for (const PlantKey& k : plant_keys())
-    out += std::string(k.key.name) + " (" + k.key.range->text() + ", default " + format_number(k.get(model)) +
-           "): " + k.help + "\n";
+    out.append(k.key.name).append(" (").append(k.key.range->text()).append(", default ")
+        .append(format_number(k.get(model))).append("): ").append(k.help).append("\n");
   return out;
 }
 

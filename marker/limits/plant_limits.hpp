@@ -12,7 +12,7 @@ namespace mark {
 
 inline const Range kPlantTauScaleRange{0.5, 2, ""};
 inline const Range kPlantWnScaleRange{0.5, 2, ""};
-inline const Range kPlantDeadRange{0, 1000, "µs"};
+inline const Range kPlantDeadRange{0, 1000, "µs"};  // dead time and latency
 inline const Range kPlantResonanceRange{100, 100000, "Hz", false, true};  // 0: none
 inline const Range kPlantResonanceZetaRange{0.001, 1, ""};
 inline const Range kPlantAccelRange{1e3, 1e10, "mm/s²", false, true};   // 0: the preset's

@@ -67,12 +67,32 @@ TEST(Plant, TauScaleScalesTheLag) {
   }
 }
 
-TEST(Plant, DeadTimeShiftsTheResponse) {
+TEST(Plant, LatencyShiftsTheResponse) {
   const double tau = head_sl10().tau_s;
-  for (double dead_us : {5.0, 10.0, 37.0}) {
+  for (double latency_us : {5.0, 10.0, 37.0}) {
+    Plant p;
+    p.latency_us = latency_us;
+    EXPECT_NEAR(t63(p), tau + latency_us * 1e-6, 0.01 * tau) << latency_us;
+  }
+}
+
+// A first-order loop acting on the position d old: ẋ(t) = (c − x(t − d))/τ. On a ramp at v the
+// lag is v·(τ − d); nothing moves for the first d after a step.
+TEST(Plant, DeadTimeShortensTheRampLagAndDelaysTheStart) {
+  const double tau = head_sl10().tau_s;
+  for (double dead_us : {5.0, 10.0}) {
     Plant p;
     p.dead_us = dead_us;
-    EXPECT_NEAR(t63(p), tau + dead_us * 1e-6, 0.01 * tau) << dead_us;
+    test::Stream s;
+    s.move({10, 0}, 1000, true);
+    const Trace tr = run(head_sl10(), p, s);
+    const double v = 10 / s.duration_s();
+    // The steady lag, after 6 ms.
+    double sum = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < tr.t.size(); ++i)
+      if (tr.t[i] > 6e-3) sum += v * tr.t[i] - tr.p[i].x, ++n;
+    EXPECT_NEAR(sum / n / v, tau - dead_us * 1e-6, 0.01 * tau) << dead_us;
   }
 }
 

@@ -1,5 +1,7 @@
 #include "driver/sim/quality_class.hpp"
 
+#include <cstdio>
+
 namespace mark {
 
 std::string_view to_string(QualityClass c) {
@@ -15,6 +17,17 @@ std::optional<QualityClass> parse_quality_class(std::string_view name) {
   for (QualityClass c : {QualityClass::poor, QualityClass::good, QualityClass::high})
     if (name == to_string(c)) return c;
   return std::nullopt;
+}
+
+std::string quality_figures(const Quality& q) {
+  char dose[64];
+  if (q.dose_ratio_max >= 1e9)
+    std::snprintf(dose, sizeof dose, "most of the strokes got no dose");
+  else
+    std::snprintf(dose, sizeof dose, "dose ratio %.2f", q.dose_ratio_max);
+  char s[200];
+  std::snprintf(s, sizeof s, "max deviation %.1f µm, coverage %.2f %%, %s", q.max_deviation_um, 100 * q.coverage, dose);
+  return s;
 }
 
 }  // namespace mark

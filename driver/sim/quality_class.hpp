@@ -4,6 +4,7 @@
 // worse is "poor". `cps` searches for the fastest marking that meets a class, `mark` reports the
 // class of every mark and can refuse to fire below one (--require-quality).
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "driver/sim/quality.hpp"
@@ -36,5 +37,10 @@ inline QualityClass classify(const Quality& q) {
 std::string_view to_string(QualityClass c);
 // "high", "good" or "poor"; nothing otherwise.
 std::optional<QualityClass> parse_quality_class(std::string_view name);
+
+// The figures a class is decided on, for messages: "max deviation 55.0 µm, coverage 97.00 %,
+// dose ratio 1.67". With most of the strokes unlit the dose ratio's median is 0 and its value a
+// sentinel (quality.hpp): the words say so instead of printing 1000000000.00.
+std::string quality_figures(const Quality& q);
 
 }  // namespace mark

@@ -23,6 +23,7 @@
 #include "marker/job/sim_evaluator.hpp"
 #include "marker/limits/code_settings.hpp"
 #include "marker/limits/head_settings.hpp"
+#include "marker/limits/production_settings.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/preview/mark_preview.hpp"
 

@@ -17,12 +17,14 @@
 #include "marker/cli/production_options.hpp"
 #include "marker/job/auto_speed.hpp"
 #include "marker/job/head_pen.hpp"
+#include "marker/job/mark_requirement.hpp"
 #include "marker/limits/device_settings.hpp"
 #include "marker/limits/head_settings.hpp"
 #include "marker/limits/layout_settings.hpp"
 #include "marker/limits/pen_settings.hpp"
 #include "marker/limits/production_settings.hpp"
 #include "marker/output/output_file.hpp"
+#include "marker/production/object_clearance.hpp"
 #include "marker/production/part_texts.hpp"
 #include "marker/production/text_repeats.hpp"
 #include "marker/vars/clock.hpp"
@@ -80,15 +82,25 @@ int run_check(const CheckArgs& a) {
                         {"objects", nlohmann::json::array()}, {"serials", serials},
                         {"required_variables", job.required_variables()}};
   double total_s = 0;
+  std::vector<CompiledJob> objects;
   for (std::size_t i = 0; i < job.objects.size(); ++i) {
     const JobObject& o = job.objects[i];
-    const JobPen& pen = job.pens.at(o.pen);
-    CompiledJob compiled;
+    const JobSpec spec = object_spec(job, o, texts[i].text, fonts);
     try {
-      compiled = compile_job(object_spec(job, o, texts[i].text, fonts));
+      objects.push_back(compile_job(spec));
+      // What the object requires, predicted for the first part as every part is before it fires.
+      if (o.require.any())
+        if (const auto why = predicted_shortfall(spec, objects.back(), o.require))
+          throw InputError("the simulator predicts " + *why + " (\"require\")");
     } catch (const InputError& e) {
       throw InputError(object_place(job, i) + e.what());
     }
+  }
+  check_objects_apart(job, objects);
+  for (std::size_t i = 0; i < job.objects.size(); ++i) {
+    const JobObject& o = job.objects[i];
+    const JobPen& pen = job.pens.at(o.pen);
+    const CompiledJob& compiled = objects[i];
     // Pulses land v/f apart; overlap against the spot (dynamics.md §4.2).
     const double spacing_um = pen.motion.mark_speed_mm_s / (pen.laser.frequency_khz * 1e3) * 1e3;
     const double overlap = 1 - spacing_um / job.head.spot_diameter_um;

@@ -45,10 +45,10 @@
 #include "marker/codes/code_data.hpp"
 #include "marker/codes/code_json.hpp"
 #include "marker/job/auto_speed.hpp"
-#include "marker/job/code_requirement.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
 #include "marker/job/job_json.hpp"
+#include "marker/job/mark_requirement.hpp"
 #include "marker/job/sim_evaluator.hpp"
 #include "marker/limits/code_settings.hpp"
 #include "marker/limits/device_settings.hpp"
@@ -165,19 +165,18 @@ nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobOptions&
 }
 
 void print_summary(const JobSpec& spec, const JobResult& r, const std::string& device) {
-  std::printf("marked %zu glyphs (%zu strokes, %zu commands) on %s, %s corners, %.0f mm/s\n",
-              r.glyphs, r.strokes, r.commands, device.c_str(),
+  // A mark that stopped did not mark its glyphs: it was planned with them (print_stop says where).
+  std::printf("%s %zu glyphs (%zu strokes, %zu commands) on %s, %s corners, %.0f mm/s\n",
+              r.outcome == JobOutcome::done ? "marked" : "planned", r.glyphs, r.strokes, r.commands, device.c_str(),
               std::string(to_string(spec.pen.corner)).c_str(), spec.pen.mark_speed_mm_s);
   std::printf("mark time %.4f s (device), %llu samples, compile %.1f µs, jumps %.1f mm, "
               "underruns %llu\n",
               r.mark_time_s, static_cast<unsigned long long>(r.samples), r.compile_time_s * 1e6,
               r.jump_length_mm, static_cast<unsigned long long>(r.drain.underrun_events));
   if (r.quality)
-    std::printf("quality: %s — max deviation %.1f µm, rms %.1f µm, coverage %.2f %%, dose ratio "
-                "%.2f, overshoot %.1f µm\n",
-                std::string(to_string(classify(*r.quality))).c_str(), r.quality->max_deviation_um,
-                r.quality->rms_deviation_um, 100 * r.quality->coverage, r.quality->dose_ratio_max,
-                r.quality->overshoot_um);
+    std::printf("quality: %s — %s, rms %.1f µm, overshoot %.1f µm\n",
+                std::string(to_string(classify(*r.quality))).c_str(), quality_figures(*r.quality).c_str(),
+                r.quality->rms_deviation_um, r.quality->overshoot_um);
   if (r.pulses)
     std::printf("pulses: %.1f µm apart at %.0f kHz on a %.0f µm spot, overlap %.0f %%%s\n",
                 r.pulses->spacing_max_um, r.pulses->frequency_khz, r.pulses->spot_diameter_um,
@@ -242,43 +241,26 @@ void write_trace(const std::vector<SimTraceRow>& rows, const std::string& path) 
   write_file_whole(path, csv);
 }
 
-// --require-quality: the simulator predicts the mark of `job` (planned for a sample-level device;
-// virtual time, no device touched); below the class the job is refused before anything fires.
-void require_quality(const JobSpec& spec, const CompiledJob& job, const std::string& name,
-                     double laser_rise_s) {
-  const auto wanted = parse_quality_class(name);
-  if (!wanted || *wanted == QualityClass::poor)
-    throw InputError("--require-quality '" + name + "' is not one of high, good");
-  JobOptions predict;
-  predict.virtual_time = true;
-  SimScannerOptions o = simulator_options(spec);
-  o.laser_rise_s = laser_rise_s;
-  SimScanner sim(o);
-  const JobResult r = run_job_simulated(spec, job, predict, sim);
-  for (std::size_t k = 0; k < r.codes.size(); ++k)
-    if (!r.codes[k].data_match)
-      throw InputError("--require-quality " + name + ": code " + std::to_string(k + 1) + " (" +
-                       std::string(to_string(spec.codes[k].spec.symbology)) +
-                       ") does not read back off the simulated mark; nothing was fired");
-  const QualityClass got = classify(*r.quality);
-  if (got >= *wanted) return;
-  char msg[320];
-  std::snprintf(msg, sizeof msg,
-                "--require-quality %s: the simulator predicts %s for this job (max deviation "
-                "%.1f µm, coverage %.2f %%, dose ratio %.2f); nothing was fired — lower --speed "
-                "or change --corner",
-                name.c_str(), std::string(to_string(got)).c_str(), r.quality->max_deviation_um,
-                100 * r.quality->coverage, r.quality->dose_ratio_max);
-  throw InputError(msg);
-}
-
-// --require-grade: the codes graded off the predicted mark; below the grade the job is refused
-// before anything fires.
-void require_grade(const JobSpec& spec, const CompiledJob& job, const std::string& letter, double laser_rise_s) {
-  const int grade = parse_required_grade(letter, "--require-grade");
-  if (spec.codes.empty()) throw InputError("--require-grade " + letter + ": the job marks no code (give --code)");
-  if (const auto why = predicted_code_grade_shortfall(spec, job, grade, laser_rise_s))
-    throw InputError("--require-grade " + letter + ": " + *why + "; nothing was fired");
+// --require-quality and --require-grade: the simulator predicts the mark of `job` (planned for a
+// sample-level device; virtual time, no device touched) and judges it as a production part is
+// judged (mark_requirement.hpp); short of it, the job is refused before anything fires.
+void require_prediction(const JobSpec& spec, const CompiledJob& job, const MarkArgs& a) {
+  MarkRequirement require;
+  std::string asked;
+  if (!a.require_quality.empty()) {
+    require.quality = parse_quality_class(a.require_quality);
+    if (!require.quality || *require.quality == QualityClass::poor)
+      throw InputError("--require-quality '" + a.require_quality + "' is not one of high, good");
+    asked = "--require-quality " + a.require_quality;
+  }
+  if (!a.require_grade.empty()) {
+    require.code_grade = parse_required_grade(a.require_grade, "--require-grade");
+    if (spec.codes.empty())
+      throw InputError("--require-grade " + a.require_grade + ": the job marks no code (give --code)");
+    asked += (asked.empty() ? "" : ", ") + ("--require-grade " + a.require_grade);
+  }
+  if (const auto why = predicted_shortfall(spec, job, require, a.head.laser_rise_us * 1e-6))
+    throw InputError(asked + ": the simulator predicts " + *why + "; nothing was fired");
 }
 
 int run_mark(const MarkArgs& a) {
@@ -306,8 +288,7 @@ int run_mark(const MarkArgs& a) {
     sample_plan = plan_job(prepared.laid_out, spec, DeviceLevel::samples);
     plan_s = seconds_since(t);
   }
-  if (!a.require_quality.empty()) require_quality(spec, *sample_plan, a.require_quality, a.head.laser_rise_us * 1e-6);
-  if (!a.require_grade.empty()) require_grade(spec, *sample_plan, a.require_grade, a.head.laser_rise_us * 1e-6);
+  if (sample_plan) require_prediction(spec, *sample_plan, a);
 
   SimSettings sim_settings;
   sim_settings.fault_at = inject.device_fault_at;
@@ -374,10 +355,8 @@ int run_mark(const MarkArgs& a) {
       std::fprintf(stderr, "marker: warning: code %zu (%s) does not read back off the simulated mark\n", k + 1,
                    std::string(to_string(spec.codes[k].spec.symbology)).c_str());
   if (r.quality && classify(*r.quality) == QualityClass::poor)
-    std::fprintf(stderr,
-                 "marker: warning: poor mark predicted (max deviation %.1f µm, coverage %.2f %%, "
-                 "dose ratio %.2f): lower --speed\n",
-                 r.quality->max_deviation_um, 100 * r.quality->coverage, r.quality->dose_ratio_max);
+    std::fprintf(stderr, "marker: warning: poor mark predicted (%s): lower --speed\n",
+                 quality_figures(*r.quality).c_str());
   if (r.pulses && r.pulses->separate_dots())
     std::fprintf(stderr,
                  "marker: warning: pulses land %.1f µm apart on a %.0f µm spot: lit strokes show "

@@ -195,10 +195,8 @@ int run_mark_job(const MarkJobArgs& a) {
     }
     if (p.quality && classify(*p.quality) == QualityClass::poor && !warned_poor) {
       warned_poor = true;
-      std::fprintf(stderr,
-                   "marker: warning: poor mark predicted (max deviation %.1f µm, coverage %.2f %%, "
-                   "dose ratio %.2f): lower the pen's speed\n",
-                   p.quality->max_deviation_um, 100 * p.quality->coverage, p.quality->dose_ratio_max);
+      std::fprintf(stderr, "marker: warning: poor mark predicted (%s): lower the pen's speed\n",
+                   quality_figures(*p.quality).c_str());
     }
   }
   return 0;

@@ -56,16 +56,12 @@ inline constexpr Choice kCodeReader{
     {"--reader", "", "code reader that decides"}, "zxing, libdmtx, zbar", {},
     "any two that read the symbology agree"};
 // What the read-back must grade (ISO/IEC TR 29158 overall grade).
-inline constexpr Choice kRequireGrade{
-    {"--require-grade", "",
-     "the least grade every code must read at (ISO/IEC TR 29158; `mark`: refused before firing, `code`: exit 2)"},
-    "A, B, C, D", {}, "none"};
 
 inline constexpr SettingRef kCodeSettingList[] = {
     &kCodeEscapes, &kCodeSize,  &kModule,       &kBarHeight, &kMatrixSize,    &kMatrixShape,
     &kQrEcc,       &kQrVersion, &kModuleStyle,  &kDotShape,  &kDotSize,       &kCodeInvert,
     &kCodeX,       &kCodeY,     &kCodeAngle,    &kBeamDiameter, &kLineWidth,  &kLineSpeed,
-    &kAperture,    &kCamera,   &kCodeReader, &kRequireGrade};
+    &kAperture,    &kCamera,   &kCodeReader};
 inline constexpr SettingTable kCodeSettings{"code", "Code", "objects[]", kCodeSettingList};
 
 }  // namespace mark

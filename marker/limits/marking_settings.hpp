@@ -11,13 +11,11 @@ inline constexpr Text kCodeData{
      "also mark a code: SYMBOLOGY:DATA (datamatrix, gs1-datamatrix, qr, code128, gs1-128); placed with the "
      "--code-… options, hatched with the --hatch-… options"},
     {}, "none"};
-inline constexpr Choice kRequireQuality{
-    {"--require-quality", "", "refuse to fire unless the simulator predicts this class"}, "high, good", {}, "none"};
 inline constexpr Toggle kVirtualTime{
     {"--virtual-time", "", "drain as fast as the device accepts (device time is still reported)"}};
 inline constexpr Toggle kNoTravel{{"--no-travel", "", "preview: leave out the dashed travel between strokes"}};
 
-inline constexpr SettingRef kMarkingSettingList[] = {&kCodeData, &kRequireQuality, &kVirtualTime, &kNoTravel};
+inline constexpr SettingRef kMarkingSettingList[] = {&kCodeData, &kVirtualTime, &kNoTravel};
 inline constexpr SettingTable kMarkingSettings{"marking", "Marking and previews", "", kMarkingSettingList};
 
 }  // namespace mark

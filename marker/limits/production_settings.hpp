@@ -21,7 +21,24 @@ inline constexpr Text kTemplate{
      "the text (a code: its data) with fields in braces: {serial}, {date:%y%j}, {var:lot}, {shift}"},
     {}, "required"};
 
-inline constexpr SettingRef kObjectSettingList[] = {&kObjectName, &kObjectPen, &kTemplate};
+// What the object's mark must be to count as good (marker/job/mark_requirement.hpp): judged on the
+// simulator before the part fires (short of it: refused, nothing consumed) and on the part as
+// marked (short of it: rejected, its numbers void).
+inline constexpr Choice kRequireQuality{
+    {"--require-quality", "require.quality",
+     "the least quality class the simulator must predict, and the mark reach (refused before firing)"},
+    "high, good", {}, "none"};
+inline constexpr Choice kRequireGrade{
+    {"--require-grade", "require.code_grade",
+     "the least grade every code must read at (ISO/IEC TR 29158; `mark`: refused before firing, `code`: exit 2)"},
+    "A, B, C, D", {}, "none"};
+inline constexpr Choice kRequireCode{
+    {"", "require.code",
+     "every code must read back to its data (always so; the key says it in the file)"},
+    "read", {}, "read"};
+
+inline constexpr SettingRef kObjectSettingList[] = {&kObjectName,    &kObjectPen,    &kTemplate,
+                                                    &kRequireQuality, &kRequireGrade, &kRequireCode};
 inline constexpr SettingTable kObjectSettings{"object", "Every object", "objects[]", kObjectSettingList};
 
 // The job's variable text: when, which shift, which variables.

@@ -1,5 +1,6 @@
 #include "marker/production/job_file.hpp"
 
+#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -185,6 +186,48 @@ std::string parse_device(JsonReader& top) {
                      "emulated board)");
 }
 
+// A date-code table: {"unit": "month", "codes": ["A", "B", …]} (the unit's first value takes the
+// first code) or {"unit": "year", "codes": {"2026": "T", …}}; every code non-empty.
+DateCodeTable parse_date_code_table(JsonReader& t) {
+  DateCodeTable table;
+  const std::string units = date_unit_names();
+  const std::optional<std::string> unit = t.string("unit");
+  if (!unit || !parse_date_unit(*unit)) t.fail("unit", "expected one of " + units);
+  table.unit = *parse_date_unit(*unit);
+  const nlohmann::json* codes = t.raw("codes");
+  const int first = first_value(table.unit), last = last_value(table.unit);
+  const std::string range = table.unit == DateUnit::year ? std::string("1 to 9999")
+                                                         : std::to_string(first) + " to " + std::to_string(last);
+  const auto code_at = [&](const nlohmann::json& c, int value, const std::string& key) {
+    if (!c.is_string() || c.get<std::string>().empty())
+      t.fail("codes", "the code for " + std::string(to_string(table.unit)) + " " + key + " is not a non-empty string");
+    table.codes[value] = c.get<std::string>();
+  };
+  if (codes && codes->is_array() && table.unit != DateUnit::year) {
+    if (codes->empty() || static_cast<int>(codes->size()) > last - first + 1)
+      t.fail("codes", "a list of 1 to " + std::to_string(last - first + 1) + " codes, for " +
+                          std::string(to_string(table.unit)) + " " + range);
+    for (std::size_t i = 0; i < codes->size(); ++i)
+      code_at((*codes)[i], first + static_cast<int>(i), std::to_string(first + static_cast<int>(i)));
+  } else if (codes && codes->is_object() && !codes->empty()) {
+    for (const auto& [key, c] : codes->items()) {
+      int value = 0;
+      const auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), value);
+      const bool in_range = table.unit == DateUnit::year ? value >= 1 && value <= 9999 : value >= first && value <= last;
+      if (ec != std::errc{} || end != key.data() + key.size() || !in_range)
+        t.fail("codes", "\"" + key + "\" is not a " + std::string(to_string(table.unit)) + " (" + range + ")");
+      code_at(c, value, key);
+    }
+  } else {
+    t.fail("codes", table.unit == DateUnit::year
+                        ? "expected an object of year → code: {\"2026\": \"T\", …}"
+                        : "expected a list of codes from " + std::to_string(first) + " on, or an object of " +
+                              std::string(to_string(table.unit)) + " → code");
+  }
+  t.finish();
+  return table;
+}
+
 }  // namespace
 
 std::map<std::string, CounterSpec> JobFile::used_counters() const {
@@ -255,9 +298,18 @@ JobFile parse_job(std::string_view text, const std::string& source) {
     JsonReader counters = top.object("counters");
     for (const auto& [k, v] : top.raw("counters")->items()) {
       check_name(counters, k, k, "counter");
-      if (k == "date" || k == "var" || k == "shift" || k == "col")
+      if (k == "date" || k == "var" || k == "shift" || k == "col" || k == "datecode" || k == "check")
         counters.fail(k, "\"" + k + "\" is a field name of its own; call the counter something else");
       job.counters.emplace(k, parse_counter(counters.object(k), k, job.time_zone));
+    }
+  }
+  if (top.has("date_codes")) {
+    JsonReader tables = top.object("date_codes");
+    for (const auto& [k, v] : top.raw("date_codes")->items()) {
+      check_name(tables, k, k, "date-code table");
+      if (builtin_date_code_table(k)) tables.fail(k, "\"" + k + "\" is a built-in table; call yours something else");
+      JsonReader t = tables.object(k);
+      job.date_codes.emplace(k, parse_date_code_table(t));
     }
   }
   if (top.has("data")) {
@@ -306,12 +358,17 @@ JobFile parse_job(std::string_view text, const std::string& source) {
       o.fail(pen_key, "missing: the job has several pens, say which one draws this object");
     }
     obj.body = parse_object_body(obj.kind, o, ctx);
+    obj.require = parse_requirement(o, obj.code() != nullptr);
     o.finish();
     {
       const TextTemplate& t = obj.text_template();
       for (const std::string& c : t.counters())
         if (!job.counters.count(c))
           o.fail(kTemplate.name.key, "{" + c + "}: no counter named \"" + c + "\" in \"counters\"");
+      for (const std::string& d : t.date_code_tables())
+        if (!job.date_codes.count(d) && !builtin_date_code_table(d))
+          o.fail(kTemplate.name.key, "{datecode:" + d + "}: no table named \"" + d +
+                                         "\" in \"date_codes\" (built in: vin-year)");
       if (t.uses(FieldKind::shift) && job.shifts.empty())
         o.fail(kTemplate.name.key, "{shift} needs the job's \"shifts\" (codes and start times)");
       if (t.uses(FieldKind::column) && !job.data)

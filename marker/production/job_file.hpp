@@ -13,10 +13,12 @@
 #include "driver/sim/head_model.hpp"
 #include "marker/codes/code_object.hpp"
 #include "marker/fill/fill_options.hpp"
+#include "marker/job/mark_requirement.hpp"
 #include "marker/layout/layout.hpp"
 #include "marker/plan/pen.hpp"
 #include "marker/plan/stroke_order.hpp"
 #include "marker/vars/counter.hpp"
+#include "marker/vars/date_codes.hpp"
 #include "marker/vars/shifts.hpp"
 #include "marker/vars/text_template.hpp"
 #include "marker/vars/time_zone.hpp"
@@ -61,6 +63,7 @@ struct JobObject {
   std::string kind = "text";
   std::string pen;
   ObjectBody body;
+  MarkRequirement require;  // "require": what its mark must be to count as good
 
   const TextObject* text() const { return std::get_if<TextObject>(&body); }
   const CodeJobObject* code() const { return std::get_if<CodeJobObject>(&body); }
@@ -84,6 +87,7 @@ struct JobFile {
   ShiftTable shifts;
   std::map<std::string, std::string> variables;  // defaults; --set overrides
   std::map<std::string, CounterSpec> counters;
+  std::map<std::string, DateCodeTable> date_codes;  // {datecode:NAME} tables of the job
   std::optional<JobDataList> data;
   std::map<std::string, JobPen> pens;
   std::vector<JobObject> objects;
@@ -103,6 +107,8 @@ JobFile read_job_file(const std::string& path, std::string* bytes = nullptr);
 class JsonReader;
 struct JobParseContext;
 ObjectBody parse_object_body(const std::string& kind, JsonReader& object, const JobParseContext& ctx);
+// An object's "require" (nothing asked when absent); a code grade needs a code object.
+MarkRequirement parse_requirement(JsonReader& object, bool is_code);
 std::vector<std::string> object_kind_names();
 
 }  // namespace mark

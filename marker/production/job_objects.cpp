@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "base/error.hpp"
+#include "marker/codes/iso_grade.hpp"
 #include "marker/codes/symbology.hpp"
 #include "marker/limits/code_settings.hpp"
 #include "marker/limits/fill_settings.hpp"
@@ -158,6 +159,20 @@ ObjectBody parse_object_body(const std::string& kind, JsonReader& object, const 
   std::string names;
   for (const Kind& k : kKinds) names += (names.empty() ? "" : ", ") + std::string(k.name);
   object.fail("kind", "\"" + kind + "\" is not an object kind (" + names + ")");
+}
+
+MarkRequirement parse_requirement(JsonReader& object, bool is_code) {
+  MarkRequirement r;
+  if (!object.has("require")) return r;
+  JsonReader q = object.object("require");
+  if (auto c = q.choice(kRequireQuality)) r.quality = parse_quality_class(*c);
+  if (auto g = q.choice(kRequireGrade)) {
+    if (!is_code) q.fail("code_grade", "a text object carries no code to grade");
+    r.code_grade = parse_grade(g->front());
+  }
+  q.choice(kRequireCode);  // "read": what every code must do anyway
+  q.finish();
+  return r;
 }
 
 std::vector<std::string> object_kind_names() {

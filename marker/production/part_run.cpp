@@ -5,6 +5,7 @@
 
 #include "base/error.hpp"
 #include "driver/sim/quality_class.hpp"
+#include "marker/production/object_clearance.hpp"
 #include "marker/production/part_json.hpp"
 #include "marker/production/part_verdict.hpp"
 #include "marker/store/utc_time.hpp"
@@ -61,6 +62,9 @@ PartRunner::PartRunner(const JobFile& job, const JobFonts& fonts,
                     o.pen.c_str(), spec.pen.tick_s * 1e6, desc.name.c_str(), desc.tick_s * 1e6);
       throw InputError(object_place(job, i) + msg);
     }
+    predictors_.emplace_back();
+    if (o.require.any() && desc.level != DeviceLevel::samples)
+      predictors_.back().emplace(spec, DeviceLevel::samples, o.code() && o.code()->escapes);
     compilers_.emplace_back(std::move(spec), desc.level, o.code() && o.code()->escapes);
   }
   if (job.data) data_ = load_data_list(job);
@@ -74,12 +78,30 @@ std::vector<CompiledJob> PartRunner::compile(const std::vector<ObjectText>& text
   for (std::size_t i = 0; i < compilers_.size(); ++i) {
     try {
       compiled.push_back(compilers_[i].compile(texts.at(i).text, home));
+      if (job_.objects[i].require.any()) refuse_predicted_shortfall(i, texts.at(i).text, compiled.back(), home);
     } catch (const InputError& e) {
       throw InputError(object_place(job_, i) + e.what());
     }
     if (!compiled.back().plan.commands.empty()) home = compiled.back().plan.commands.back().end();
   }
+  check_objects_apart(job_, compiled);
   return compiled;
+}
+
+void PartRunner::refuse_predicted_shortfall(std::size_t object, const std::string& text,
+                                            const CompiledJob& compiled, const Point& home) {
+  std::optional<JobCompiler>& predictor = predictors_[object];
+  const JobSpec spec = marked_spec(object, text);
+  const auto why = predictor ? predicted_shortfall(spec, predictor->compile(text, home), job_.objects[object].require)
+                             : predicted_shortfall(spec, compiled, job_.objects[object].require);
+  if (why) throw InputError("the simulator predicts " + *why + " (\"require\"); nothing was fired");
+}
+
+JobSpec PartRunner::marked_spec(std::size_t i, const std::string& text) const {
+  JobSpec spec = compilers_[i].spec();
+  const JobObject& object = job_.objects[i];
+  set_marked_text(spec, text, object.code() && object.code()->escapes);
+  return spec;
 }
 
 PartResult PartRunner::mark_next(SysTime now, const PartOptions& options) {
@@ -149,13 +171,13 @@ PartResult PartRunner::run(PartResult part, std::vector<CompiledJob> compiled,
   const Point end = compiled.empty() || compiled.back().plan.commands.empty()
                         ? mirrors_
                         : compiled.back().plan.commands.back().end();
+  std::vector<JobSpec> specs;  // each object's job with the part's text: marked, then judged
+  specs.reserve(part.objects.size());
   std::size_t i = 0;
   try {
     for (; i < part.objects.size(); ++i) {
       ObjectRun& o = part.objects[i];
-      JobSpec spec = compilers_[i].spec();
-      const JobObject& object = job_.objects[i];
-      set_marked_text(spec, o.text, object.code() && object.code()->escapes);
+      const JobSpec& spec = specs.emplace_back(marked_spec(i, o.text));
       o.result = run_compiled_job(spec, std::move(compiled[i]), options.job, device_);
       o.started = true;
       if (o.result.outcome != JobOutcome::done) {
@@ -177,9 +199,10 @@ PartResult PartRunner::run(PartResult part, std::vector<CompiledJob> compiled,
   }
   mirrors_ = part.outcome == JobOutcome::done ? end : device_position();
   if (part.outcome == JobOutcome::done) {
-    std::vector<std::vector<CodeVerification>> codes;
-    for (const ObjectRun& o : part.objects) codes.push_back(o.result.codes);
-    if (const std::optional<Rejection> r = part_verdict(codes)) {
+    std::vector<MarkedObject> marked;
+    for (std::size_t k = 0; k < part.objects.size(); ++k)
+      marked.push_back({&specs[k], &part.objects[k].result, job_.objects[k].require});
+    if (const std::optional<Rejection> r = part_verdict(marked)) {
       part.rejected = true;
       part.stopped_object = r->object;
       part.message = "object " + in_quotes(part.objects[r->object].name) + ": " + r->reason;

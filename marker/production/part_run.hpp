@@ -105,7 +105,14 @@ class PartRunner {
   const std::map<std::string, std::string>& variables() const { return variables_; }
 
  private:
+  // Each object planned for the device; an object with a "require" is also judged on a fresh
+  // simulated scanner, and a part the simulator says falls short is refused (InputError, before
+  // anything fires; inside the allocation nothing is consumed).
   std::vector<CompiledJob> compile(const std::vector<ObjectText>& texts);
+  void refuse_predicted_shortfall(std::size_t object, const std::string& text, const CompiledJob& compiled,
+                                  const Point& home);
+  // Object `i`'s job with the part's text in it.
+  JobSpec marked_spec(std::size_t i, const std::string& text) const;
   PartResult run(PartResult part, std::vector<CompiledJob> compiled, const PartOptions& options);
   // Totals, the worst quality, the widest pulse spacing and the message of a part that stopped.
   void summarise(PartResult& part) const;
@@ -119,6 +126,9 @@ class PartRunner {
   MarkContext context_;
   std::map<std::string, CounterSpec> counters_;  // the ones the templates use
   std::vector<JobCompiler> compilers_;           // one per object, in file order
+  // For an object with a "require" on a device that does not take samples: its plan for the
+  // simulator's prediction (a sample-level device's own plan serves for both).
+  std::vector<std::optional<JobCompiler>> predictors_;
   std::optional<DataList> data_;                 // the job's data list, if any
   std::size_t next_row_ = 0;                     // rows before it were taken (by this run or earlier)
   // Where the device's mirrors are before the next part: each object is planned from where the

@@ -41,6 +41,7 @@ std::vector<ObjectText> render_objects(const JobFile& job,
   v.counters = &job.counters;
   v.serials = &serials;
   v.columns = columns;
+  v.date_codes = &job.date_codes;
   std::vector<ObjectText> texts;
   for (std::size_t i = 0; i < job.objects.size(); ++i) {
     const JobObject& o = job.objects[i];

@@ -1,17 +1,22 @@
 #include "marker/vars/render.hpp"
 
 #include <ctime>
+#include <vector>
 
 #include "base/error.hpp"
+#include "marker/vars/check_digit.hpp"
 
 namespace mark {
 namespace {
 
-void render_date(const std::string& format, const MarkValues& v, std::string& out) {
+const TimeZone& zone_of(const MarkValues& v) {
   static const TimeZone utc;
-  const TimeZone& zone = v.zone ? *v.zone : utc;
+  return v.zone ? *v.zone : utc;
+}
+
+void render_date(const std::string& format, const MarkValues& v, std::string& out) {
   std::string abbrev;
-  const std::tm tm = zone.local_tm(v.now, abbrev);
+  const std::tm tm = zone_of(v).local_tm(v.now, abbrev);
   char buf[256];
   const std::size_t n = std::strftime(buf, sizeof buf, format.c_str(), &tm);
   if (n == 0 && !format.empty())
@@ -26,11 +31,42 @@ const typename Map::mapped_type* find(const Map* map, const std::string& key) {
   return it == map->end() ? nullptr : &it->second;
 }
 
+void render_date_code(const std::string& name, const MarkValues& v, std::string& out) {
+  const DateCodeTable* table = find(v.date_codes, name);
+  if (!table) table = builtin_date_code_table(name);
+  if (!table) throw InputError("{datecode:" + name + "}: no date-code table named \"" + name + "\" in \"date_codes\"");
+  std::string abbrev;
+  out += date_code(*table, name, zone_of(v).local_tm(v.now, abbrev));
+}
+
+struct PendingCheck {
+  CheckDigit algorithm;
+  std::size_t at;  // where in `out` it goes, before any check is inserted
+};
+
+// Each check over the text since the template's start (or the check before it), left to right,
+// inserted where its field stood.
+void insert_checks(const std::vector<PendingCheck>& checks, std::size_t start, std::string& out) {
+  std::size_t from = start, shift = 0;
+  for (const PendingCheck& c : checks) {
+    const std::size_t at = c.at + shift;
+    const char check = check_character(c.algorithm, std::string_view(out).substr(from, at - from),
+                                       std::string_view(out).substr(at));
+    out.insert(at, 1, check);
+    from = at + 1;
+    ++shift;
+  }
+}
+
 }  // namespace
 
 void render(const TextTemplate& t, const MarkValues& v, std::string& out) {
+  const std::size_t start = out.size();
+  std::vector<PendingCheck> checks;
   for (const TemplateField& f : t.fields()) {
     switch (f.kind) {
+      case FieldKind::datecode: render_date_code(f.text, v, out); break;
+      case FieldKind::check: checks.push_back({*parse_check_digit(f.text), out.size()}); break;
       case FieldKind::literal: out += f.text; break;
       case FieldKind::date: render_date(f.text, v, out); break;
       case FieldKind::var: {
@@ -52,8 +88,7 @@ void render(const TextTemplate& t, const MarkValues& v, std::string& out) {
       case FieldKind::shift: {
         if (!v.shifts || v.shifts->empty())
           throw InputError("{shift} needs the job's shift start times (\"shifts\")");
-        static const TimeZone utc;
-        out += v.shifts->at((v.zone ? *v.zone : utc).local_seconds(v.now)).shift->code;
+        out += v.shifts->at(zone_of(v).local_seconds(v.now)).shift->code;
         break;
       }
       case FieldKind::counter: {
@@ -68,6 +103,7 @@ void render(const TextTemplate& t, const MarkValues& v, std::string& out) {
       }
     }
   }
+  insert_checks(checks, start, out);
 }
 
 }  // namespace mark

@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "base/error.hpp"
+#include "marker/vars/check_digit.hpp"
 
 namespace mark {
 namespace {
@@ -80,6 +81,19 @@ class TemplateParser {
       if (f.text.empty()) fail(at, "{col:NAME} needs the name of a column of the job's data list");
       return f;
     }
+    if (head == "datecode") {
+      f.kind = FieldKind::datecode;
+      f.text = std::string(rest);
+      if (!name_ok(f.text)) fail(at, "{datecode:NAME} needs the name of a date-code table (the job's \"date_codes\", or vin-year)");
+      return f;
+    }
+    if (head == "check") {
+      f.kind = FieldKind::check;
+      f.text = std::string(rest);
+      if (!parse_check_digit(f.text))
+        fail(at, "{check:" + f.text + "}: the check is one of " + check_digit_names());
+      return f;
+    }
     if (head == "shift") {
       if (colon != std::string_view::npos) fail(at, "{shift} takes no options");
       f.kind = FieldKind::shift;
@@ -88,7 +102,7 @@ class TemplateParser {
     if (!name_ok(head))
       fail(at, "'{" + std::string(body) +
                    "}' is not a field: use {COUNTER}, {COUNTER:OPTIONS}, {date:FORMAT}, "
-                   "{var:NAME}, {col:NAME} or {shift}");
+                   "{var:NAME}, {col:NAME}, {shift}, {datecode:NAME} or {check:ALGO}");
     f.kind = FieldKind::counter;
     f.text = std::string(head);
     std::string_view opts = rest;
@@ -180,6 +194,13 @@ std::vector<std::string> TextTemplate::columns() const {
   std::vector<std::string> names;
   for (const TemplateField& f : fields_)
     if (f.kind == FieldKind::column) add_unique(names, f.text);
+  return names;
+}
+
+std::vector<std::string> TextTemplate::date_code_tables() const {
+  std::vector<std::string> names;
+  for (const TemplateField& f : fields_)
+    if (f.kind == FieldKind::datecode) add_unique(names, f.text);
   return names;
 }
 

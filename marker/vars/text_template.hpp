@@ -10,6 +10,10 @@
 //   {var:NAME}             a value set from outside for each mark (--set NAME=VALUE)
 //   {col:NAME}             column NAME of the part's row of the job's data list (a CSV file)
 //   {shift}                the code of the shift running now (the job's shift start times)
+//   {datecode:NAME}        the code of date-code table NAME for now (the job's "date_codes", or
+//                          the built-in vin-year; date_codes.hpp)
+//   {check:ALGO}           a check character over the text before it (luhn, mod10, mod11,
+//                          iso7064-11-2, iso7064-37-36, vin; check_digit.hpp)
 //   {{ and }}              literal braces
 //
 // Parsing checks the syntax; whether a counter or variable exists is the job's business.
@@ -22,11 +26,11 @@
 
 namespace mark {
 
-enum class FieldKind { literal, counter, date, var, shift, column };
+enum class FieldKind { literal, counter, date, var, shift, column, datecode, check };
 
 struct TemplateField {
   FieldKind kind = FieldKind::literal;
-  std::string text;  // literal text, counter name, date format or variable name
+  std::string text;  // literal text, counter name, date format, variable, table or algorithm name
   // Counter fields: overrides of the counter's own formatting.
   std::optional<Alphabet> alphabet;
   std::optional<int> width;
@@ -45,6 +49,7 @@ class TextTemplate {
   std::vector<std::string> counters() const;
   std::vector<std::string> variables() const;
   std::vector<std::string> columns() const;  // {col:NAME}
+  std::vector<std::string> date_code_tables() const;  // {datecode:NAME}
   bool uses(FieldKind kind) const;
   // No fields besides literal text: the same text for every part.
   bool constant() const;

@@ -91,7 +91,7 @@ TEST(CliMark, RequireQualityRefusesToFireWhenThePredictionFallsShort) {
                                 "--virtual-time", "--require-quality", "good", "--json"});
   EXPECT_EQ(refused.code, 1);
   EXPECT_EQ(refused.out, "");
-  EXPECT_NE(refused.err.find("--require-quality good: the simulator predicts poor"), std::string::npos)
+  EXPECT_NE(refused.err.find("--require-quality good: the simulator predicts quality poor, below good"), std::string::npos)
       << refused.err;
   EXPECT_NE(refused.err.find("nothing was fired"), std::string::npos);
   const auto fired = run_cli({"mark", "abc", "--height", "3", "--speed", "300", "--virtual-time",

@@ -131,7 +131,7 @@ std::string generic_path(const std::string& path) {
   std::string p = std::regex_replace(path, std::regex(R"(\[[0-9]+\])"), "[]");
   for (std::size_t at = p.find(".sets[]."); at != std::string::npos; at = p.find(".sets[]."))
     p.erase(at, std::string_view(".sets[]").size());
-  for (const char* named : {"pens.", "counters.", "variables."}) {
+  for (const char* named : {"pens.", "counters.", "variables.", "date_codes."}) {
     const std::string prefix = named;
     if (p.starts_with(prefix)) {
       const std::size_t dot = p.find('.', prefix.size());
@@ -165,7 +165,8 @@ std::map<std::string, SettingRef> declared_keys() {
 const std::set<std::string> kStructure = {
     "format", "name", "shifts[].code", "shifts[].start", "variables.NAME", "counters", "pens", "objects",
     "head.model", "data", "data.file", "data.delimiter", "objects[].kind", "objects[].symbology", "objects[].fill", "objects[].hatch",
-    "objects[].fill.sets", "objects[].hatch.sets", "pens.NAME", "counters.NAME",
+    "objects[].fill.sets", "objects[].hatch.sets", "pens.NAME", "counters.NAME", "objects[].require",
+    "date_codes", "date_codes.NAME", "date_codes.NAME.unit", "date_codes.NAME.codes",
 };
 // Declared for a place that does not read it: a code's hatch fills square modules, where the fill
 // rule makes no difference.
@@ -177,12 +178,13 @@ constexpr const char* kEveryReader = R"({
   "head": {"model": "SL10", "spot_diameter_um": 40}, "field_mm": 100, "time_zone": "UTC",
   "shifts": [{"code": "A", "start": "06:00"}], "variables": {"lot": "A1"},
   "counters": {"sn": {"start": 1, "digits": "0123456789"}},
+  "date_codes": {"m": {"unit": "month", "codes": ["A", "B"]}},
   "pens": {"p": {"speed_mm_s": 500}},
   "objects": [
     {"name": "t", "pen": "p", "template": "{sn} {var:lot} {shift}", "circle": {"radius_mm": 20},
-     "fill": {"sets": [{"angle_deg": 0}]}},
+     "fill": {"sets": [{"angle_deg": 0}]}, "require": {"quality": "good"}},
     {"name": "c", "kind": "code", "pen": "p", "symbology": "datamatrix", "template": "{sn}",
-     "hatch": {"sets": [{"angle_deg": 0}]}}
+     "hatch": {"sets": [{"angle_deg": 0}]}, "require": {"code": "read", "code_grade": "C"}}
   ]
 })";
 
@@ -220,6 +222,7 @@ std::string job_with(const std::string& place, const std::string& key, const std
   const std::string item = "\"" + key.substr(key.rfind('.') + 1) + "\": " + value;
   if (key.starts_with("head.")) head = ", " + item;
   else if (key.starts_with("circle.")) circle = ", " + item;
+  else if (key.starts_with("require.")) object = ", \"require\": {" + item + "}";
   else if (place == "pens.NAME") pen = ", " + item;
   else if (place == "objects[]") object = ", " + item;
   else top = ", " + item;

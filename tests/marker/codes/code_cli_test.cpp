@@ -187,7 +187,7 @@ TEST(MarkCodeCli, ACodeAloneAndTheRefusals) {
   const test::CliResult unreadable = test::run_cli({"mark", "", "--code", "datamatrix:SN1", "--speed", "8000",
                                                     "--require-quality", "good", "--virtual-time"});
   EXPECT_EQ(unreadable.code, 1);
-  EXPECT_NE(unreadable.err.find("does not read back off the simulated mark; nothing was fired"), std::string::npos)
+  EXPECT_NE(unreadable.err.find("--require-quality good: the simulator predicts code 1 not decoded by"), std::string::npos)
       << unreadable.err;
 }
 
@@ -202,7 +202,8 @@ TEST(MarkCodeCli, RequireGradeRefusesACodeBelowItBeforeFiring) {
   const test::CliResult refused = test::run_cli(strict);
   EXPECT_EQ(refused.code, 1);
   EXPECT_EQ(refused.err,
-            "marker: --require-grade A: code 1 (qr 21x21): grade B (cell contrast B); nothing was fired\n");
+            "marker: --require-grade A: the simulator predicts code 1 (qr 21x21): grade B (cell contrast B); nothing "
+            "was fired\n");
   EXPECT_TRUE(refused.out.empty()) << "nothing ran";
   const test::CliResult done = test::run_cli(met);
   ASSERT_EQ(done.code, 0) << done.err;

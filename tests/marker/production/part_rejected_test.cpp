@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "base/error.hpp"
+#include "marker/production/job_file.hpp"
 #include "marker/production/part_verdict.hpp"
 #include "tests/marker/cli_runner.hpp"
 
@@ -41,12 +43,48 @@ TEST(PartVerdict, AnyCodeThatDoesNotDecodeToItsDataRejectsThePartNamingIt) {
   misread.decoded = true;
   misread.decoded_data = "SN41";
   misread.expected_data = "SN42";
-  EXPECT_FALSE(part_verdict({{}, {read}}));
-  const auto r = part_verdict({{read}, {read, unread}});
+  const JobSpec spec;
+  const auto marked = [](std::vector<CodeVerification> codes) {
+    JobResult r;
+    r.codes = std::move(codes);
+    return r;
+  };
+  const JobResult none = marked({}), one = marked({read}), second_unread = marked({read, unread}),
+                  wrong = marked({misread});
+  EXPECT_FALSE(part_verdict({{&spec, &none, {}}, {&spec, &one, {}}}));
+  const auto r = part_verdict({{&spec, &one, {}}, {&spec, &second_unread, {}}});
   ASSERT_TRUE(r);
   EXPECT_EQ(r->object, 1u);
   EXPECT_EQ(r->reason, "code 2 not decoded by any two (modules wrong: 113)");
-  EXPECT_EQ(part_verdict({{misread}})->reason, "code 1 read as \"SN41\", not \"SN42\" (modules wrong: 0)");
+  EXPECT_EQ(part_verdict({{&spec, &wrong, {}}})->reason, "code 1 read as \"SN41\", not \"SN42\" (modules wrong: 0)");
+}
+
+TEST(PartVerdict, AnObjectBelowItsRequiredQualityIsRejectedNamingTheClass) {
+  // Quality figures of a mark: 55 µm off at worst, the raster hatch's "poor" of issue 23.
+  JobResult poor;
+  poor.quality = Quality{};
+  poor.quality->lit_points = 1000;
+  poor.quality->max_deviation_um = 55;
+  poor.quality->coverage = 0.99;
+  poor.quality->dose_ratio_max = 1.67;
+  const JobSpec spec;
+  MarkRequirement good;
+  good.quality = QualityClass::good;
+  EXPECT_FALSE(part_verdict({{&spec, &poor, {}}})) << "nothing required: nothing judged but the codes";
+  const auto r = part_verdict({{&spec, &poor, good}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->reason, "quality poor, below good (max deviation 55.0 µm, coverage 99.00 %, dose ratio 1.67)");
+  // Within "good"'s limits (30 µm, 98 %, dose ratio 2): met.
+  poor.quality->max_deviation_um = 25;
+  EXPECT_FALSE(part_verdict({{&spec, &poor, good}}));
+  // Most strokes unlit: the dose ratio's median is 0 and its value a sentinel; the words say so.
+  poor.quality->coverage = 0.3;
+  poor.quality->dose_ratio_max = 1e9;
+  EXPECT_EQ(part_verdict({{&spec, &poor, good}})->reason,
+            "quality poor, below good (max deviation 25.0 µm, coverage 30.00 %, most of the strokes got no dose)");
+  // A device without an evaluator gives no figures: nothing to fall short of.
+  const JobResult blind;
+  EXPECT_FALSE(part_verdict({{&spec, &blind, good}}));
 }
 
 TEST(PartRejected, ACodeThatDoesNotReadIsRejectedItsNumberVoidAndTheRunStops) {
@@ -94,6 +132,60 @@ TEST(PartRejected, ACodeThatDoesNotReadIsRejectedItsNumberVoidAndTheRunStops) {
   }
   EXPECT_EQ(outcomes, (std::vector<std::string>{"rejected", "done", "done"}));
   fs::remove_all(dir);
+}
+
+
+// A text whose pen the simulator says marks "poor": 1 mm letters at 5 m/s on SL10 (the lag rounds
+// every letter off); at 300 mm/s and 3 mm they are "high".
+std::string text_job(double speed_mm_s, double height_mm, const std::string& require) {
+  std::ostringstream j;
+  j << R"({"format": "marker-job/1", "head": "SL10", "counters": {"serial": {"start": 41, "width": 6}},
+           "pens": {"p": {"speed_mm_s": )"
+    << speed_mm_s << R"(}}, "objects": [{"name": "sn", "template": "SN {serial}", "height_mm": )" << height_mm
+    << R"(, "require": )" << require << "}]}";
+  return j.str();
+}
+
+TEST(PartRequire, APartTheSimulatorPredictsBelowItsRequiredQualityIsRefusedBeforeFiringConsumingNothing) {
+  const fs::path dir = test::fresh_temp_dir("marker_part_require");
+  const std::string store = (dir / "s.sqlite").string();
+  const fs::path fast = write(dir, "fast.json", text_job(5000, 1, R"({"quality": "good"})"));
+  const test::CliResult r = test::run_cli({"mark", "--job", fast.string(), "--count", "2", "--store", store,
+                                           "--create-counters", "--virtual-time", "--json"});
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_TRUE(r.out.empty()) << "no part was marked: " << r.out;
+  EXPECT_NE(r.err.find("objects[0] \"sn\": the simulator predicts quality poor, below good (max deviation"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("(\"require\"); nothing was fired"), std::string::npos) << r.err;
+
+  // Without the requirement the same job marks (and reports "poor"); with it at a pen that holds,
+  // the first part takes 41: the refused part consumed nothing.
+  const fs::path slow = write(dir, "slow.json", text_job(300, 3, R"({"quality": "high", "code": "read"})"));
+  const test::CliResult g = test::run_cli({"mark", "--job", slow.string(), "--count", "1", "--store", store,
+                                           "--virtual-time", "--json"});
+  ASSERT_EQ(g.code, 0) << g.err;
+  const nlohmann::json part = nlohmann::json::parse(g.out);
+  EXPECT_EQ(part["outcome"], "done");
+  EXPECT_EQ(part["serials"]["serial"].get<std::int64_t>(), 41);
+  fs::remove_all(dir);
+}
+
+TEST(PartRequire, TheJobFileSaysWhatAnObjectRequiresInTheSameWordsAsTheCommandLine) {
+  const auto refused = [](const std::string& require) {
+    try {
+      parse_job(text_job(300, 3, require), "j.json");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(refused(R"({"quality": "good", "code": "read"})"), "");
+  EXPECT_EQ(refused(R"({"quality": "poor"})"), "j.json: objects[0].require.quality: \"poor\" is not one of high, good");
+  EXPECT_EQ(refused(R"({"code_grade": "B"})"), "j.json: objects[0].require.code_grade: a text object carries no code to grade");
+  EXPECT_EQ(refused(R"({"qualty": "good"})").substr(0, 30), "j.json: objects[0].require.qua");
+  const JobFile job = parse_job(code_job(300, "square").insert(0, ""), "c.json");
+  EXPECT_FALSE(job.objects[0].require.any());
 }
 
 }  // namespace

@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "driver/lmc/lmc_spec.hpp"
 #include "driver/sim/grey_png.hpp"
 #include "driver/sim/quality_class.hpp"
 #include "fonts/catalog.hpp"
@@ -296,11 +297,16 @@ int run_mark(const MarkArgs& a) {
   sim_settings.laser_rise_s = a.head.laser_rise_us * 1e-6;
   sim_settings.plant = parse_plant_option(a.head.plant);
   sim_settings.virtual_time = a.virtual_time;
+  // Refused before the device opens (a capture file would be begun): only the simulated head
+  // (alone or behind the emulated board) has a plant.
+  if (!sim_settings.plant.is_model() && a.device != "sim") {
+    const auto board = lmc::parse_lmc_spec(a.device);
+    if (!board || !board->emulated)
+      throw InputError("--plant '" + a.head.plant + "': a real board drives its own head; the plant is the simulated one's");
+  }
   const OpenedDevice opened = open_device(a.device, spec, sim_settings, a.lmc);
   const std::unique_ptr<Device>& device = opened.device;
   const SimScanner* scanner = opened.simulator ? &opened.simulator->scanner() : nullptr;
-  if (!scanner && !sim_settings.plant.is_model())
-    throw InputError("--plant '" + a.head.plant + "': a real board drives its own head; the plant is the simulated one's");
   if (!scanner && (!a.preview.empty() || !a.dose_png.empty() || !a.trace.empty()))
     throw InputError("--preview, --dose-png and --trace need a simulated scanner (--device sim or lmc-emulated)");
 

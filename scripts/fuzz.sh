@@ -15,7 +15,7 @@ set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${MARKER_FUZZ_BUILD:-$root/build-fuzz}
-all_targets=(jhf lff cxf outline_font job data_list glyph_script pgm png option_values camera_option lmc_reply cor_file code_data head_profile station_line station_http)
+all_targets=(jhf lff cxf outline_font job data_list glyph_script pgm png option_values camera_option plant_option lmc_reply cor_file code_data head_profile station_line station_http)
 
 seconds=20
 if [[ ${1:-} =~ ^[0-9]+$ ]]; then
@@ -56,6 +56,7 @@ declare -A seeds=(
   [pgm]="$root/tests/fuzz/seeds/pgm/*"
   [option_values]="$root/tests/fuzz/seeds/option_values/*"
   [camera_option]="$root/tests/fuzz/seeds/camera_option/*"
+  [plant_option]="$root/tests/fuzz/seeds/plant_option/*"
   [job]="$root/tests/fuzz/job-seeds/*.json"
   [data_list]="$root/tests/fuzz/seeds/data_list/*"
   [code_data]="$root/tests/fuzz/code_data-seeds/*"
@@ -64,7 +65,7 @@ declare -A seeds=(
 )
 # Option values and replies are short; the others are files (a .cor table is ~68 kB).
 # lmc_reply reaches a whole list packet (3072 bytes) for the masked link.
-declare -A max_len=([option_values]=64 [camera_option]=256 [glyph_script]=1024 [lmc_reply]=3200 [cor_file]=70000)
+declare -A max_len=([option_values]=64 [camera_option]=256 [plant_option]=256 [glyph_script]=1024 [lmc_reply]=3200 [cor_file]=70000)
 # The readers of hostile binary files get tighter limits than the default (10 s, 2048 MB), so an
 # input that costs more than its size allows fails the run instead of slowing it: a PNG decodes at
 # most its declared pixels (16 KB of input reach about 16 M pixels, 64 MB of floats), an outline

@@ -39,7 +39,10 @@
 #include "driver/sim/dose_trail.hpp"
 #include "driver/sim/head_model.hpp"
 #include "driver/sim/lit_paths.hpp"
+#include "driver/sim/plant.hpp"
+#include "driver/sim/plant_effects.hpp"
 #include "driver/sim/pulse_train.hpp"
+#include "driver/sim/second_order_step.hpp"
 #include "driver/sim/sim_trace.hpp"
 #include "driver/vec2.hpp"
 #include "ringbuffer/scan_sample.hpp"
@@ -48,6 +51,9 @@ namespace mark {
 
 struct SimScannerOptions {
   HeadModel head = head_sl10();
+  // The head as it is, apart from `head` (the preset, which the planner's model describes):
+  // plant.hpp. The default adds nothing.
+  Plant plant;
   double tick_s = 10e-6;            // time per sample
   int substeps = 10;                // integration steps per tick (1 µs at the default tick)
   double laser_rise_s = 0;          // first-order rise/fall time constant of the laser power; 0 = instant
@@ -85,7 +91,8 @@ class SimScanner : public SampleDevice<ScanSample> {
   bool halted() const { return lifecycle_.stopped(); }
   bool laser_commanded() const { return laser_cmd_; }  // laser gate as last commanded
   double laser_power() const { return power_; }        // effective power now, 0..1
-  Vec2 beam() const { return {axis_[0].x, axis_[1].x}; }
+  // The beam: the servo's shaft, the mirror's twist against it and the position noise.
+  Vec2 beam() const { return Vec2{axis_[0].x, axis_[1].x} + offset_; }
   Vec2 beam_velocity_mm_s() const { return {axis_[0].v, axis_[1].v}; }
 
   const DoseRaster& dose() const { return dose_; }
@@ -107,14 +114,24 @@ class SimScanner : public SampleDevice<ScanSample> {
   void laser_off() noexcept;
   void check_block(std::span<const ScanSample> block) const;
   void follow(const ScanSample& s);
-  void step_axis(Axis& a, double cmd, double dt) const;
+  void step_axis(Axis& a, const Axis& seen, double cmd, double rate, double dt) const;
   void record_lit(Vec2 p0, Vec2 p1, bool lit);
   [[noreturn]] void fail(DeviceFault fault);
   void publish_status();
 
   SimScannerOptions options_;
+  HeadModel servo_;             // the head's servo as the plant has it (τ, ζ, acceleration)
+  SecondOrderStep servo_step_;  // the second-order servo's exact sub-step (unused by first order)
   Axis axis_[2];
-  Vec2 cmd_{0, 0};           // previous command (start of the current tick)
+  CommandHistory commands_;     // the samples, quantised, as the (delayed) servo sees them
+  // The plant's dead time: per axis, the shaft at the start of each of the last dead_substeps_
+  // sub-steps (sized by the constructor), the oldest at dead_at_.
+  int dead_substeps_ = 0;
+  std::vector<Axis> dead_ring_[2];
+  std::size_t dead_at_ = 0;
+  MirrorResonance resonance_;
+  BeamNoise noise_;
+  Vec2 offset_{0, 0};           // the beam's offset from the shaft: twist + noise
   bool laser_cmd_ = false;
   double power_ = 0;         // effective laser power 0..1
   double lit_ref_ = 0;       // power of the last lit sample: the lit test is relative to it

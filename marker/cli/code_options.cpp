@@ -8,6 +8,7 @@
 #include "marker/codes/code_data.hpp"
 #include "marker/cli/option_values.hpp"
 #include "marker/codes/code_reader.hpp"
+#include "marker/cli/number_keys.hpp"
 #include "marker/limits/camera_limits.hpp"
 #include "marker/limits/code_settings.hpp"
 
@@ -109,28 +110,10 @@ const std::vector<CameraKey>& camera_keys() {
 CameraSettings parse_camera_option(const std::string& text) {
   CameraSettings s;
   const auto& keys = camera_keys();
-  std::size_t at = 0;
-  while (at <= text.size() && !text.empty()) {
-    const std::size_t comma = std::min(text.find(',', at), text.size());
-    const std::string item = text.substr(at, comma - at);
-    at = comma + 1;
-    const std::size_t eq = item.find('=');
-    if (eq == std::string::npos)
-      throw InputError("--camera '" + item + "': expected KEY=VALUE, e.g. pixel_um=20,defocus_um=40");
-    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
-    const auto k = std::find_if(keys.begin(), keys.end(), [&](const CameraKey& c) { return key == c.name; });
-    if (k == keys.end()) {
-      std::string names;
-      for (const CameraKey& c : keys) names += (names.empty() ? "" : ", ") + std::string(c.name);
-      throw InputError("--camera: unknown key '" + key + "' (keys: " + names + ")");
-    }
-    const std::optional<double> v = parse_number(value);
-    if (!v) throw InputError("--camera " + key + ": '" + value + "' is not a number (range: " + k->range->text() + ")");
-    check_range("--camera " + key, *v, *k->range, value);
-    if (k->range == &kNoiseSeedRange && *v != std::floor(*v))
-      throw InputError("--camera " + key + ": '" + value + "' is not a whole number");
-    k->set(s, *v);
-  }
+  std::vector<NumberKey> names;
+  for (const CameraKey& k : keys) names.push_back({k.name, k.range, k.range == &kNoiseSeedRange});
+  for (const auto& [k, v] : parse_number_keys("--camera", text, names, "pixel_um=20,defocus_um=40"))
+    keys[k].set(s, v);
   return s;
 }
 

@@ -13,6 +13,7 @@ SimScannerOptions scanner_options(const JobSpec& job, const SimSettings& sim) {
   o.fault_at = sim.fault_at;
   o.trace = sim.trace;
   o.laser_rise_s = sim.laser_rise_s;
+  o.plant = sim.plant;
   return o;
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "driver/device.hpp"
+#include "driver/sim/plant.hpp"
 #include "marker/cli/lmc_options.hpp"
 #include "marker/job/job.hpp"
 #include "marker/job/sim_evaluator.hpp"
@@ -22,6 +23,7 @@ struct SimSettings {
   std::uint64_t fault_at = UINT64_MAX;  // --inject fault@N
   bool trace = false;                   // --trace FILE.csv
   double laser_rise_s = 0;              // --laser-rise-us
+  Plant plant;                          // --plant: the head as it is, apart from the planner's model
   bool virtual_time = false;            // --virtual-time: the emulated board's clock too
 };
 

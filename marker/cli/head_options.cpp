@@ -14,7 +14,10 @@ void add_head_options(CLI::App& app, HeadArgs& a, bool laser) {
   add_setting(app, kHead, a.head);
   add_setting(app, kHeadModel, a.model);
   add_setting(app, kHeadZeta, a.zeta);
-  if (laser) add_setting(app, kLaserRise, a.laser_rise_us);
+  if (laser) {
+    add_setting(app, kLaserRise, a.laser_rise_us);
+    add_setting(app, kPlant, a.plant);
+  }
 }
 
 HeadModel simulated_head(const HeadArgs& a) {
@@ -41,6 +44,7 @@ std::string head_args_string(const HeadArgs& a) {
   if (!a.model.empty()) s << " " << kHeadModel.name.flag << " " << a.model;
   if (a.zeta) s << " " << kHeadZeta.name.flag << " " << *a.zeta;
   if (a.laser_rise_us > 0) s << " " << kLaserRise.name.flag << " " << a.laser_rise_us;
+  if (!a.plant.empty()) s << " " << kPlant.name.flag << " " << a.plant;
   return s.str();
 }
 

@@ -2,7 +2,7 @@
 // The simulated head every command that drives one shares: --head (preset), --head-model
 // (the real head's servo: its preset's own, first or second order), --head-zeta (damping of a
 // second-order servo) and, where a laser fires, --laser-rise-us (the laser power's first-order
-// rise and fall time).
+// rise and fall time) and --plant (the simulated head apart from the planner's model of it).
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
@@ -17,6 +17,7 @@ struct HeadArgs {
   std::string model;             // "", "first" or "second"
   std::optional<double> zeta;    // second-order damping (default: the preset's)
   double laser_rise_us = *kLaserRise.value;
+  std::string plant;             // --plant KEY=VALUE,… ("": the preset itself)
 };
 
 void add_head_options(CLI::App& app, HeadArgs& args, bool laser);

@@ -1,6 +1,6 @@
 // `marker mark TEXT [layout options] [--fill hatch …] [--code SYMBOLOGY:DATA --code-…]
 //  [--device sim|lmc[:SERIAL]|lmc-capture:FILE] [--head SL10|SL14|cheap|SA14]
-//  [--head-model first|second] [--laser-rise-us US] [--corner blanking|delays|none]
+//  [--head-model first|second] [--laser-rise-us US] [--plant K=V,…] [--corner blanking|delays|none]
 //  [--speed MM_S|auto] [--lookahead] [--feed-forward] [--head-profile FILE] [pen parameters]
 //  [--power PCT] [--frequency KHZ] [--pulse-width NS] [--preview FILE.png] [--dose-png FILE.png]
 //  [--virtual-time] [--json] [--inject KIND@N] [--trace FILE.csv] [--require-quality high|good]
@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "driver/lmc/lmc_spec.hpp"
 #include "driver/sim/grey_png.hpp"
 #include "driver/sim/quality_class.hpp"
 #include "fonts/catalog.hpp"
@@ -41,6 +42,7 @@
 #include "marker/cli/option_values.hpp"
 #include "marker/cli/output_options.hpp"
 #include "marker/cli/pen_options.hpp"
+#include "marker/cli/plant_option.hpp"
 #include "marker/codes/code_data.hpp"
 #include "marker/codes/code_json.hpp"
 #include "marker/job/auto_speed.hpp"
@@ -147,6 +149,7 @@ nlohmann::json to_json(const MarkArgs& a, const JobSpec& spec, const JobOptions&
   j["head"] = spec.head.name;
   j["head_model"] = spec.head.second_order ? "second" : "first";
   j["laser_rise_us"] = a.head.laser_rise_us;
+  j["plant"] = plant_text(parse_plant_option(a.head.plant));
   j["lookahead"] = spec.pen.lookahead || spec.pen.feed_forward();
   j["feed_forward"] = spec.pen.feed_forward();
   j["device"] = device_name;
@@ -292,7 +295,15 @@ int run_mark(const MarkArgs& a) {
   sim_settings.fault_at = inject.device_fault_at;
   sim_settings.trace = !a.trace.empty();
   sim_settings.laser_rise_s = a.head.laser_rise_us * 1e-6;
+  sim_settings.plant = parse_plant_option(a.head.plant);
   sim_settings.virtual_time = a.virtual_time;
+  // Refused before the device opens (a capture file would be begun): only the simulated head
+  // (alone or behind the emulated board) has a plant.
+  if (!sim_settings.plant.is_model() && a.device != "sim") {
+    const auto board = lmc::parse_lmc_spec(a.device);
+    if (!board || !board->emulated)
+      throw InputError("--plant '" + a.head.plant + "': a real board drives its own head; the plant is the simulated one's");
+  }
   const OpenedDevice opened = open_device(a.device, spec, sim_settings, a.lmc);
   const std::unique_ptr<Device>& device = opened.device;
   const SimScanner* scanner = opened.simulator ? &opened.simulator->scanner() : nullptr;

@@ -16,6 +16,12 @@ std::optional<double> parse_number(std::string_view text) {
   return v;
 }
 
+std::string exact_number(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
 std::optional<long long> parse_whole_number(std::string_view text) {
   long long v = 0;
   const char* begin = text.data();

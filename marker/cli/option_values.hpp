@@ -17,6 +17,10 @@ std::optional<double> parse_number(std::string_view text);
 // anything else, a fraction or an exponent included.
 std::optional<long long> parse_whole_number(std::string_view text);
 
+// The shortest text that parses back to exactly v ("0.1", "1.02", "4294967295"), for printed
+// command lines that must reproduce a run.
+std::string exact_number(double v);
+
 // Exactly `count` numbers separated by any one of `separators`. Throws InputError
 // "OPTION 'TEXT': expected FORMAT" for the wrong count and "OPTION 'TEXT': 'PART' is not a number".
 std::vector<double> parse_numbers(std::string_view option, std::string_view text, std::string_view separators,

@@ -1,24 +1,15 @@
 #include "marker/cli/pen_options.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <sstream>
 
 #include "base/error.hpp"
 #include "marker/cli/option_ranges.hpp"
+#include "marker/cli/option_values.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/limits/pen_settings.hpp"
 
 namespace mark::cli {
-namespace {
-
-std::string exact(double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
-}  // namespace
 
 void add_pen_options(CLI::App& app, PenArgs& a, bool with_speed) {
   add_setting(app, kCorner, a.corner);
@@ -120,7 +111,7 @@ Pen make_pen(const PenArgs& a, const HeadModel& head) {
 
 std::string pen_args_string(const Pen& p) {
   std::ostringstream s;
-  const auto arg = [&](const auto& setting, double v) { s << " " << setting.name.flag << " " << exact(v); };
+  const auto arg = [&](const auto& setting, double v) { s << " " << setting.name.flag << " " << exact_number(v); };
   s << kCorner.name.flag << " " << to_string(p.corner);
   arg(kMarkSpeed, p.mark_speed_mm_s);
   arg(kJumpSpeed, p.jump_speed_mm_s);

@@ -19,6 +19,13 @@ inline constexpr Quantity kHeadZeta{
     {0.05, 10, ""}, {}, "the preset's"};
 inline constexpr Quantity kLaserRise{
     {"--laser-rise-us", "", "laser power rise and fall time constant (0: instant)"}, {0, 1000, "µs"}, 0};
+// The simulated head as it is, apart from the planner's model: its keys and their ranges are in
+// plant_limits.hpp (parts of one value, like --camera's).
+inline constexpr Text kPlant{
+    {"--plant", "",
+     "the simulated head as it is, apart from the planner's model: KEY=VALUE,… (keys: tau_scale, wn_scale, "
+     "dead_us, resonance_hz, resonance_zeta, accel_max, noise_um, seed, quant_bits; docs/speed.md)"},
+    {}, "the preset itself"};
 inline constexpr Quantity kSpot{
     {"--spot", "head.spot_diameter_um", "focused spot diameter (pulse overlap is measured against it)"},
     {1, 10000, "µm"}, 40};
@@ -28,7 +35,7 @@ inline constexpr Quantity kField{
     {"--field", "field_mm", "field size (square; a scan head's at most its own field)"},
     {1, 10000, "mm"}, 110, "110; a job file: the head's (110)"};
 
-inline constexpr SettingRef kHeadSettingList[] = {&kHead, &kHeadModel, &kHeadZeta, &kLaserRise, &kSpot, &kField};
+inline constexpr SettingRef kHeadSettingList[] = {&kHead, &kHeadModel, &kHeadZeta, &kLaserRise, &kPlant, &kSpot, &kField};
 inline constexpr SettingTable kHeadSettings{"head", "Head", "", kHeadSettingList};
 
 }  // namespace mark

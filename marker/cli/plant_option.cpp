@@ -1,0 +1,82 @@
+#include "marker/cli/plant_option.hpp"
+
+#include <vector>
+
+#include "marker/cli/number_keys.hpp"
+#include "marker/cli/option_values.hpp"
+#include "marker/limits/plant_limits.hpp"
+
+namespace mark::cli {
+namespace {
+
+// One --plant key: the value as typed (in the key's unit) ↔ the Plant field (SI where it is).
+struct PlantKey {
+  NumberKey key;
+  void (*set)(Plant&, double);
+  double (*get)(const Plant&);
+  const char* help;
+};
+
+const std::vector<PlantKey>& plant_keys() {
+  static const std::vector<PlantKey> keys{
+      {{"tau_scale", &kPlantTauScaleRange}, [](Plant& p, double v) { p.tau_scale = v; },
+       [](const Plant& p) { return p.tau_scale; }, "the servo's ramp lag τ × this (second order: ωn ÷ this)"},
+      {{"wn_scale", &kPlantWnScaleRange}, [](Plant& p, double v) { p.wn_scale = v; },
+       [](const Plant& p) { return p.wn_scale; },
+       "second-order servo: ωn × this at the same ramp lag (ζ × this); a first-order servo ignores it"},
+      {{"dead_us", &kPlantDeadRange}, [](Plant& p, double v) { p.dead_us = v; },
+       [](const Plant& p) { return p.dead_us; },
+       "servo dead time inside the loop: it acts on the position as it was this long ago (1 µs steps)"},
+      {{"latency_us", &kPlantDeadRange}, [](Plant& p, double v) { p.latency_us = v; },
+       [](const Plant& p) { return p.latency_us; },
+       "command latency outside the loop: the response shifted this much later (1 µs steps; the laser is not)"},
+      {{"resonance_hz", &kPlantResonanceRange}, [](Plant& p, double v) { p.resonance_hz = v; },
+       [](const Plant& p) { return p.resonance_hz; }, "mirror resonance against the motor shaft (0: none)"},
+      {{"resonance_zeta", &kPlantResonanceZetaRange}, [](Plant& p, double v) { p.resonance_zeta = v; },
+       [](const Plant& p) { return p.resonance_zeta; }, "damping of the mirror resonance"},
+      {{"accel_max", &kPlantAccelRange}, [](Plant& p, double v) { p.accel_max_mm_s2 = v; },
+       [](const Plant& p) { return p.accel_max_mm_s2; }, "the mirror's acceleration limit, mm/s² (0: the preset's)"},
+      {{"noise_um", &kPlantNoiseRange}, [](Plant& p, double v) { p.noise_um = v; },
+       [](const Plant& p) { return p.noise_um; }, "beam position noise, rms per axis, correlated over the servo's τ"},
+      {{"seed", &kPlantSeedRange, true}, [](Plant& p, double v) { p.seed = static_cast<std::uint64_t>(v); },
+       [](const Plant& p) { return static_cast<double>(p.seed); }, "noise seed (the same seed gives the same figures)"},
+      {{"quant_bits", &kPlantQuantRange, true}, [](Plant& p, double v) { p.quant_bits = static_cast<int>(v); },
+       [](const Plant& p) { return static_cast<double>(p.quant_bits); },
+       "command quantisation: 2^bits codes across the field (XY2-100: 16; 0: exact)"},
+  };
+  return keys;
+}
+
+}  // namespace
+
+Plant parse_plant_option(const std::string& text) {
+  Plant p;
+  const auto& keys = plant_keys();
+  std::vector<NumberKey> names;
+  for (const PlantKey& k : keys) names.push_back(k.key);
+  for (const auto& [k, v] : parse_number_keys("--plant", text, names, "tau_scale=1.1,dead_us=10"))
+    keys[k].set(p, v);
+  return p;
+}
+
+std::string plant_text(const Plant& plant) {
+  std::string out;
+  const Plant model;
+  for (const PlantKey& k : plant_keys())
+    if (k.get(plant) != k.get(model)) {
+      if (!out.empty()) out += ',';
+      out.append(k.key.name).append("=").append(exact_number(k.get(plant)));
+    }
+  return out;
+}
+
+std::string plant_keys_help() {
+  std::string out;
+  const Plant model;
+  for (const PlantKey& k : plant_keys())
+    out.append(k.key.name).append(" (").append(k.key.range->text()).append(", default ")
+        .append(format_number(k.get(model))).append("): ").append(k.help).append("\n");
+  return out;
+}
+
+}  // namespace mark::cli

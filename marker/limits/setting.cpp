@@ -77,7 +77,8 @@ std::string default_text(const SettingRef& s) {
           } else if constexpr (std::is_same_v<T, Count>) {
             if (p->value) given = std::to_string(*p->value);
           } else {
-            if (!p->value.empty()) given = "`" + std::string(p->value) + "`";
+            // Appended, not `"`" + … + "`"`: GCC 12 warns a false -Wrestrict on that sum.
+            if (!p->value.empty()) given = std::string("`").append(p->value).append("`");
           }
           if (!p->derived.empty()) return std::string(p->derived);
           return given ? *given : std::string("—");

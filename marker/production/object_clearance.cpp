@@ -63,6 +63,7 @@ std::string named(const JobFile& job, std::size_t i) { return "object \"" + job.
 }  // namespace
 
 void check_objects_apart(const JobFile& job, const std::vector<CompiledJob>& compiled) {
+  if (compiled.size() < 2) return;  // one object meets nothing: no ink sampled on every part
   const double spot_mm = job.head.spot_diameter_um / 1000;
   std::vector<std::vector<Point>> ink;
   std::vector<InkGrid> grids;

@@ -462,6 +462,7 @@ Command make_mark_command() {
             add_setting(*sub, kStation, p.station),
             add_setting(*sub, kRemark, p.remark),
             add_setting(*sub, kRemarkReason, p.reason),
+            add_setting(*sub, kAllowChangedJob, p.allow_changed_job),
             add_setting(*sub, kCreateCounters, p.create_counters)};
         // --store, --store-wait-ms, --store-attempts: the production run's.
         const std::size_t before = sub->get_options().size();

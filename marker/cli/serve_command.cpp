@@ -59,6 +59,7 @@ int serve(const ServeArgs& a) {
   std::vector<AllowedNet> allow;
   for (const std::string& net : a.modbus_allow) allow.push_back(parse_allowed_net(net, "--modbus-allow"));
   if (!allow.empty() && !modbus_address) throw InputError("--modbus-allow: give --modbus HOST:PORT too");
+  if (modbus_address) check_modbus_access(*modbus_address, allow);  // before the store and device open
   JobSource source(a.job);
   Station station(source, log_line);
   TcpServer server(station, address, a.max_connections, log_line);

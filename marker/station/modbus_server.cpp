@@ -43,16 +43,20 @@ struct ModbusServer::Impl {
   void close_all();
 };
 
+void check_modbus_access(const ListenAddress& address, const std::vector<AllowedNet>& allow) {
+  in_addr host{};
+  ::inet_pton(AF_INET, address.host.c_str(), &host);
+  if ((ntohl(host.s_addr) >> 24) != 127 && allow.empty())
+    throw InputError("--modbus " + address.host + ":" + std::to_string(address.port) +
+                     ": Modbus has no authentication; listening beyond loopback needs --modbus-allow ADDR[/BITS] "
+                     "naming the PLC's address or network");
+}
+
 ModbusServer::ModbusServer(Station& station, const ListenAddress& address, std::vector<AllowedNet> allow,
                            int max_connections, std::function<void(const std::string&)> log)
     : impl_(std::make_unique<Impl>(station, std::move(allow), max_connections, std::move(log))) {
+  check_modbus_access(address, impl_->allow);
   const std::string where = address.host + ":" + std::to_string(address.port);
-  in_addr host{};
-  ::inet_pton(AF_INET, address.host.c_str(), &host);
-  if ((ntohl(host.s_addr) >> 24) != 127 && impl_->allow.empty())
-    throw InputError("--modbus " + where +
-                     ": Modbus has no authentication; listening beyond loopback needs --modbus-allow ADDR[/BITS] "
-                     "naming the PLC's address or network");
   Impl& m = *impl_;
   m.ctx = modbus_new_tcp(address.host.c_str(), address.port);
   if (!m.ctx) throw InputError("--modbus " + where + ": " + modbus_strerror(errno));

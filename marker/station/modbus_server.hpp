@@ -19,6 +19,10 @@
 
 namespace mark {
 
+// Throws InputError when `address` is not loopback and `allow` is empty (Modbus has no
+// authentication); the server's constructor checks it too, serve checks it before the store.
+void check_modbus_access(const ListenAddress& address, const std::vector<AllowedNet>& allow);
+
 class ModbusServer {
  public:
   // Binds now (throws InputError naming --modbus and the address when it cannot, or when the

@@ -4,6 +4,7 @@
 #include <modbus.h>
 #include <netinet/in.h>
 #include <poll.h>
+#include <sys/eventfd.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -24,6 +25,9 @@ struct ModbusServer::Impl {
   modbus_t* ctx = nullptr;
   modbus_mapping_t* mapping = nullptr;
   int listen_fd = -1;
+  // stop() signals it: the poll wakes at once, so SIGTERM's abort is not held back by a poll
+  // timeout (serve stops this server before it aborts the part).
+  int wake_fd = -1;
   std::vector<int> clients;
   std::uint32_t refused_starts = 0;  // only the server thread touches it
   std::atomic<bool> stopping{false};
@@ -79,6 +83,14 @@ ModbusServer::ModbusServer(Station& station, const ListenAddress& address, std::
     modbus_free(m.ctx);
     throw std::bad_alloc();
   }
+  m.wake_fd = ::eventfd(0, EFD_CLOEXEC);
+  if (m.wake_fd < 0) {
+    const std::string why = std::strerror(errno);
+    modbus_mapping_free(m.mapping);
+    ::close(m.listen_fd);
+    modbus_free(m.ctx);
+    throw InputError("--modbus " + where + ": " + why);
+  }
   m.thread = std::thread([&m] { m.loop(); });
 }
 
@@ -87,8 +99,13 @@ ModbusServer::~ModbusServer() { stop(); }
 void ModbusServer::stop() {
   Impl& m = *impl_;
   if (m.stopping.exchange(true)) return;
+  const std::uint64_t one = 1;
+  [[maybe_unused]] const ssize_t n = ::write(m.wake_fd, &one, sizeof one);
   if (m.thread.joinable()) m.thread.join();
+  const std::size_t open = m.clients.size();
   m.close_all();
+  ::close(m.wake_fd);
+  m.say("stopped (" + std::to_string(open) + " connections closed)");
   modbus_mapping_free(m.mapping);
   modbus_free(m.ctx);  // frees only: every socket is closed above
 }
@@ -104,12 +121,12 @@ void ModbusServer::Impl::close_all() {
 void ModbusServer::Impl::loop() {
   std::vector<pollfd> fds;
   while (!stopping.load()) {
-    fds.assign(1, pollfd{listen_fd, POLLIN, 0});
+    fds.assign({pollfd{listen_fd, POLLIN, 0}, pollfd{wake_fd, POLLIN, 0}});
     for (const int fd : clients) fds.push_back(pollfd{fd, POLLIN, 0});
-    const int r = ::poll(fds.data(), fds.size(), 50);  // 50 ms: stop() is seen that soon
-    if (r <= 0) continue;
+    const int r = ::poll(fds.data(), fds.size(), -1);
+    if (r <= 0 || stopping.load()) continue;
     std::vector<int> ended;
-    for (std::size_t i = 1; i < fds.size(); ++i)
+    for (std::size_t i = 2; i < fds.size(); ++i)
       if (fds[i].revents & (POLLIN | POLLHUP | POLLERR))
         if (!serve_one(fds[i].fd)) ended.push_back(fds[i].fd);
     for (const int fd : ended) {

@@ -54,8 +54,9 @@ def main():
     trips.sort()
     figures = {
         "parts": parts,
-        "round_trip_median_s": trips[len(trips) // 2] if trips else None,
-        "round_trip_p99_s": trips[min(len(trips) - 1, int(len(trips) * 0.99))] if trips else None,
+        # The quantiles as bench/prog_station_tcp.cpp takes them: sorted[q * (n - 1)].
+        "round_trip_median_s": trips[int(0.5 * (len(trips) - 1))] if trips else None,
+        "round_trip_p99_s": trips[int(0.99 * (len(trips) - 1))] if trips else None,
     }
     print(json.dumps(figures))
     return 0

@@ -48,6 +48,12 @@ ModbusImage modbus_image(const StationStatus& status, std::uint32_t refused_star
   return m;
 }
 
+bool modbus_tcp_frame_sound(const std::uint8_t* adu, std::size_t size) {
+  if (size < 8) return false;
+  const std::size_t length = static_cast<std::size_t>(adu[4]) << 8 | adu[5];
+  return adu[2] == 0 && adu[3] == 0 && length == size - 6;
+}
+
 CoilRequest parse_coil_request(const std::uint8_t* pdu, std::size_t size) {
   CoilRequest r;
   if (size < 1) return r;

@@ -52,6 +52,12 @@ ModbusImage modbus_image(const StationStatus& status, std::uint32_t refused_star
 // hold it, and a wrapped number would be a wrong serial).
 std::uint32_t modbus_serial_value(const PartResult& part);
 
+// A whole Modbus TCP request as modbus_receive gives it (MBAP header first): its protocol id is
+// 0 (Modbus) and its length field counts its bytes from the unit id on. libmodbus 3.1.6 reads a
+// frame by its function code and checks neither, and echoes a write's header as it came: a
+// frame that fails this is not Modbus or the stream lost its place, so the connection closes.
+bool modbus_tcp_frame_sound(const std::uint8_t* adu, std::size_t size);
+
 // A request's PDU (function code first, no MBAP header) as far as the station acts on it.
 struct CoilRequest {
   enum Kind { other, write, invalid } kind = other;  // other: not a coil write; libmodbus answers

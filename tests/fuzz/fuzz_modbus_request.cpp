@@ -6,17 +6,13 @@
 // protocol defines). Also parse_coil_request on the input as a PDU, and --modbus-allow's parser
 // on it as text: a write stays inside coils 0–2, an invalid request names exception 2 or 3, a
 // parsed network has no host bits. Anything else, or a sanitizer report, is a bug.
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <sys/time.h>
-#include <unistd.h>
 
 #include <cstdint>
 #include <string>
 
 #include "base/error.hpp"
 #include "fuzz_check.hpp"
+#include "fuzz_loopback.hpp"
 #include "fuzz_station_source.hpp"
 #include "marker/station/modbus_map.hpp"
 #include "marker/station/modbus_server.hpp"
@@ -73,24 +69,7 @@ void check_replies(const std::string& reply) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   check_parse(data, size);
   Served& s = served();
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in sa{};
-  sa.sin_family = AF_INET;
-  sa.sin_port = htons(static_cast<std::uint16_t>(s.modbus.port()));
-  ::inet_pton(AF_INET, "127.0.0.1", &sa.sin_addr);
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0) broken("cannot connect to the server");
-  timeval tv{5, 0};
-  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
-  for (std::size_t sent = 0; sent < size;) {
-    const ssize_t n = ::send(fd, data + sent, size - sent, MSG_NOSIGNAL);
-    if (n <= 0) break;  // the server closed on a bad frame: its answers so far are read below
-    sent += static_cast<std::size_t>(n);
-  }
-  ::shutdown(fd, SHUT_WR);
-  std::string reply;
-  char chunk[4096];
-  for (ssize_t n; (n = ::recv(fd, chunk, sizeof chunk, 0)) > 0;) reply.append(chunk, static_cast<std::size_t>(n));
-  ::close(fd);
+  const std::string reply = mark::fuzz::exchange_on_loopback(s.modbus.port(), data, size);
   s.station.wait_idle();
   check_replies(reply);
   return 0;

@@ -183,6 +183,10 @@ TEST(StationModbus, BadRequestsAnswerExceptionsAndChangeNothing) {
   EXPECT_EQ(reply[7], 0x85);
   EXPECT_EQ(reply[8], kExceptionIllegalValue);
   EXPECT_EQ(c.write_coil(kCoilStart, false), 0);  // a 0 write: nothing
+  // A start coil write with protocol id 0xFF00 is not Modbus: the connection closes, unanswered.
+  const std::uint8_t not_modbus[] = {0, 9, 0xFF, 0, 0, 6, 0xFF, 0x05, 0, 0, 0xFF, 0};
+  ASSERT_EQ(::send(modbus_get_socket(c.ctx()), not_modbus, sizeof not_modbus, MSG_NOSIGNAL), 12);
+  EXPECT_EQ(::recv(modbus_get_socket(c.ctx()), reply, sizeof reply, 0), 0);
   EXPECT_EQ(s.station->status().parts, 0u);
   EXPECT_EQ(s.close().size(), 0u);
 }
@@ -275,6 +279,19 @@ TEST(ModbusMap, ImageFromStatus) {
   EXPECT_EQ(m.registers[kRegisterOutcome], 1);
   st.last->serials = {{"sn", 0x100000000}};
   EXPECT_EQ(modbus_serial_value(*st.last), 0u);
+}
+
+TEST(ModbusMap, SoundFramesOnly) {
+  const std::uint8_t good[] = {0, 1, 0, 0, 0, 6, 0xFF, 0x05, 0, 0, 0xFF, 0};
+  EXPECT_TRUE(modbus_tcp_frame_sound(good, sizeof good));
+  std::uint8_t other[sizeof good];
+  std::copy(std::begin(good), std::end(good), other);
+  other[2] = 0xFF;  // protocol id 0xFF00: not Modbus
+  EXPECT_FALSE(modbus_tcp_frame_sound(other, sizeof other));
+  other[2] = 0;
+  other[5] = 7;  // the length field says one byte more
+  EXPECT_FALSE(modbus_tcp_frame_sound(other, sizeof other));
+  EXPECT_FALSE(modbus_tcp_frame_sound(good, 7));
 }
 
 TEST(ModbusMap, ParsesCoilWrites) {

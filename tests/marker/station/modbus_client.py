@@ -6,7 +6,9 @@ then read discrete inputs 0-3 and input registers 0-6. Prints one JSON object: e
 figures (serial and marks done decoded from the register pairs, low word first) and the start
 -> busy-clear round trip in seconds (median, p99). Exits 2 when the station does not answer.
 
-usage: modbus_client.py PORT MARKS [HOST]
+usage: modbus_client.py PORT MARKS [HOST] [POLL_MS]
+
+POLL_MS: the pause between two polls of busy (default 0: back to back), as a PLC's scan cycle.
 """
 import json
 import sys
@@ -22,6 +24,7 @@ def u32(registers, at):
 def main():
     port, marks = int(sys.argv[1]), int(sys.argv[2])
     host = sys.argv[3] if len(sys.argv) > 3 else "127.0.0.1"
+    poll_s = float(sys.argv[4]) / 1000 if len(sys.argv) > 4 else 0.0
     client = ModbusTcpClient(host, port=port, timeout=10)
     if not client.connect():
         print(json.dumps({"error": "cannot connect"}))
@@ -40,6 +43,8 @@ def main():
                 return 2
             if not busy.bits[0]:
                 break
+            if poll_s:
+                time.sleep(poll_s)
         trips.append(time.perf_counter() - started)
         inputs = client.read_discrete_inputs(0, 4).bits[:4]
         registers = client.read_input_registers(0, 7).registers

@@ -17,6 +17,7 @@
 
 #include "base/error.hpp"
 #include "marker/station/modbus_map.hpp"
+#include "tests/marker/cli_runner.hpp"
 #include "tests/marker/station/served_station.hpp"
 
 namespace mark {
@@ -221,6 +222,22 @@ TEST(StationModbus, PeerOutsideTheAllowListIsClosedUnread) {
   EXPECT_EQ(inside.inputs()[kInputReady], 1);
 }
 
+// --max-connections holds for Modbus clients too: one more is closed at once; a closed one
+// frees its place.
+TEST(StationModbus, OneClientOverTheLimitIsClosed) {
+  Served s(true, 2);
+  auto a = std::make_unique<Client>(s.modbus_port());
+  Client b(s.modbus_port());
+  EXPECT_EQ(a->inputs()[kInputReady], 1);
+  EXPECT_EQ(b.inputs()[kInputReady], 1);
+  Client third(s.modbus_port());
+  std::uint8_t bit = 0;
+  EXPECT_EQ(modbus_read_input_bits(third.ctx(), 0, 1, &bit), -1);
+  a.reset();  // its FIN is queued on loopback before the next connect: the server sees it first
+  Client fourth(s.modbus_port());
+  EXPECT_EQ(fourth.inputs()[kInputReady], 1);
+}
+
 TEST(StationModbus, BeyondLoopbackNeedsAnAllowList) {
   Served s;
   try {
@@ -230,6 +247,33 @@ TEST(StationModbus, BeyondLoopbackNeedsAnAllowList) {
     EXPECT_EQ(std::string(e.what()).substr(0, 61), "--modbus 0.0.0.0:0: Modbus has no authentication; listening b");
   }
   EXPECT_THROW(parse_host_port("0.0.0.0", "--modbus"), InputError);
+}
+
+// `marker serve` refuses a bad --modbus / --modbus-allow with one line, before the store is
+// created or the device opened.
+TEST(StationModbus, ServeRefusesBadModbusOptionsBeforeTheStoreOpens) {
+  const auto dir = test::fresh_store_dir("modbus-cli");
+  const std::string job = (dir / "line.json").string(), store = (dir / "out" / "s.sqlite").string();
+  std::ofstream(job) << test::kStationJob;
+  std::filesystem::create_directories(dir / "out");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--modbus", "0.0.0.0:1502"},
+       "--modbus 0.0.0.0:1502: Modbus has no authentication; listening beyond loopback needs --modbus-allow "
+       "ADDR[/BITS] naming the PLC's address or network"},
+      {{"--modbus", "0.0.0.0:1502", "--modbus-allow", "10.1.0.0/33"},
+       "--modbus-allow 10.1.0.0/33: the prefix length after / must be a number in 0–32"},
+      {{"--modbus-allow", "10.1.0.0/16"}, "--modbus-allow: give --modbus HOST:PORT too"},
+      {{"--modbus", "127.0.0.1:70000"}, "--modbus 127.0.0.1:70000: the port must be a number in 0–65535"},
+  };
+  for (const auto& [extra, message] : cases) {
+    std::vector<std::string> args{"serve", "--job", job, "--store", store, "--create-counters"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const test::CliResult r = test::run_cli(args);
+    EXPECT_EQ(r.code, 1) << message;
+    EXPECT_EQ(r.err, "marker: " + message + "\n");
+    EXPECT_TRUE(std::filesystem::is_empty(dir / "out")) << message;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(PeerAllow, ParsesNetworksAndMatchesPeers) {

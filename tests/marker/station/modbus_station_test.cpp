@@ -6,6 +6,7 @@
 #include <arpa/inet.h>
 #include <modbus.h>
 #include <netinet/in.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -186,8 +187,11 @@ TEST(StationModbus, BadRequestsAnswerExceptionsAndChangeNothing) {
   EXPECT_EQ(c.write_coil(kCoilStart, false), 0);  // a 0 write: nothing
   // A start coil write with protocol id 0xFF00 is not Modbus: the connection closes, unanswered.
   const std::uint8_t not_modbus[] = {0, 9, 0xFF, 0, 0, 6, 0xFF, 0x05, 0, 0, 0xFF, 0};
-  ASSERT_EQ(::send(modbus_get_socket(c.ctx()), not_modbus, sizeof not_modbus, MSG_NOSIGNAL), 12);
-  EXPECT_EQ(::recv(modbus_get_socket(c.ctx()), reply, sizeof reply, 0), 0);
+  const int fd = modbus_get_socket(c.ctx());  // libmodbus leaves it non-blocking: wait for the close
+  ASSERT_EQ(::send(fd, not_modbus, sizeof not_modbus, MSG_NOSIGNAL), 12);
+  pollfd p{fd, POLLIN, 0};
+  ASSERT_EQ(::poll(&p, 1, 5000), 1);
+  EXPECT_EQ(::recv(fd, reply, sizeof reply, 0), 0);
   EXPECT_EQ(s.station->status().parts, 0u);
   EXPECT_EQ(s.close().size(), 0u);
 }

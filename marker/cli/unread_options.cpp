@@ -22,7 +22,7 @@ void refuse_unread(const CLI::App& app, std::span<const SettingRef> settings,
         std::string typed = flag_of(name_of(s), prefix);
         // A toggle on by default was given by its --no- form when it reads off: name that one.
         if (const auto* t = std::get_if<const Toggle*>(&s); t && (*t)->on && !app.get_option(typed)->as<bool>())
-          typed = "--no-" + typed.substr(2);
+          typed = std::string("--no-").append(typed, 2);  // appended: GCC 12's false -Wrestrict on a sum
         throw InputError(typed + " does not apply: " + *why);
       }
 }

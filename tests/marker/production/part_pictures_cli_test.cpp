@@ -66,11 +66,7 @@ struct PartPicturesCli : testing::Test {
     ASSERT_EQ(r.code, 0) << r.err;
   }
   void TearDown() override { std::filesystem::remove_all(dir); }
-  test::CliResult mark(std::vector<std::string> extra) {
-    std::vector<std::string> args{"mark", "--job", job, "--virtual-time", "--station", "line-1"};
-    args.insert(args.end(), extra.begin(), extra.end());
-    return run_cli(args);
-  }
+  test::CliResult mark(const std::vector<std::string>& extra) { return test::run_mark_job(job, extra); }
   long long next_serial() {
     const auto r = run_cli({"serial", "show", "serial", "--job", job, "--json"});
     return nlohmann::json::parse(r.out)["next"].get<long long>();
@@ -175,12 +171,13 @@ TEST_F(PartPicturesCli, TwoPartsWriteFilesNamedByTheirSerialsThatDifferWhereTheS
   // more than 20 % ("2" is a longer stroke than "1").
   const double lot1 = ink_in(d, px, x0, top, lot, nullptr), lot2 = ink_in(d2, px2, x02, top2, lot, nullptr);
   const double sn1 = ink_in(d, px, x0, top, sn_grown, &digit), sn2 = ink_in(d2, px2, x02, top2, sn_grown, &digit);
-  const double digit1 = ink_in(d, px, x0, top, digit, nullptr), digit2 = ink_in(d2, px2, x02, top2, digit, nullptr);
+  const double digit1 = ink_in(d, px, x0, top, digit, nullptr);
   EXPECT_GT(lot1, 500);
   EXPECT_NEAR(lot2 / lot1, 1.0, 0.02) << lot1 << " " << lot2;
   EXPECT_NEAR(sn2 / sn1, 1.0, 0.02) << sn1 << " " << sn2;
   // Where the last digit is the ink is as much but not in the same place: over 30 % of it is
-  // inked on one part and not the other, against under 10 % on the lot (its edges).
+  // inked on one part and not the other (52 % measured), against under 1 % on the lot (3 pixels
+  // of 8886 measured: the same text, started from where a different serial ended).
   const auto xor_in = [&](const Box& b) {
     std::size_t n = 0;
     for (double fy = b.y0; fy <= b.y1; fy += px)
@@ -188,7 +185,7 @@ TEST_F(PartPicturesCli, TwoPartsWriteFilesNamedByTheirSerialsThatDifferWhereTheS
     return static_cast<double>(n);
   };
   EXPECT_GT(xor_in(digit) / digit1, 0.3) << xor_in(digit) << " of " << digit1;
-  EXPECT_LT(xor_in(lot) / lot1, 0.1) << xor_in(lot) << " of " << lot1;
+  EXPECT_LT(xor_in(lot) / lot1, 0.01) << xor_in(lot) << " of " << lot1;
 }
 
 TEST_F(PartPicturesCli, TraceSpansBothObjectsInsideTheField) {
@@ -244,6 +241,23 @@ TEST_F(PartPicturesCli, SeveralPartsWithoutAPlaceholderAreRefusedBeforeAnythingI
   EXPECT_TRUE(std::filesystem::exists(path("one.svg")));
 }
 
+// A picture that cannot be written does not undo the part: part 2 is marked and recorded done
+// (its serial consumed), its line names the file not written, and the run stops with exit 1.
+TEST_F(PartPicturesCli, AFileNotWrittenIsNamedInThePartsLineAndStopsTheRun) {
+  std::filesystem::create_directories(path("p-000042.png"));  // a folder where part 2's file goes
+  const auto r = mark({"--count", "3", "--preview", path("p-{serial}.png")});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("part 1/3  id 2  serial=41"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("wrote " + path("p-000041.png")), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("part 2/3  id 3  serial=42"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("done  "), std::string::npos);
+  EXPECT_NE(r.out.find("; --preview NOT written: output file '" + path("p-000042.png") + "'"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("part 3/3"), std::string::npos) << r.out;
+  EXPECT_EQ(r.err.substr(r.err.find("marker: part 2")),
+            "marker: part 2 (id 3) is done as recorded; a file of it was not written: no further part started\n");
+  EXPECT_EQ(next_serial(), 43);
+}
+
 TEST_F(PartPicturesCli, JobCheckPreviewDrawsTheStoresNextPartWithoutConsumingIt) {
   ASSERT_EQ(mark({"--preview", path("m-{serial}.png")}).code, 0);  // part 41
   ASSERT_EQ(next_serial(), 42);
@@ -255,17 +269,19 @@ TEST_F(PartPicturesCli, JobCheckPreviewDrawsTheStoresNextPartWithoutConsumingIt)
   const GrayImage check = png(path("check.png")), m42 = png(path("m-000042.png")), m41 = png(path("m-000041.png"));
   ASSERT_EQ(check.width, m42.width);
   ASSERT_EQ(check.height, m42.height);
-  // The same part on the same simulated head: the pictures agree pixel for pixel but for at most
-  // 0.5 % of the ink; part 41's differs from it by more (its last digit).
+  // The same part on the same simulated head: the pictures agree pixel for pixel (0 differ,
+  // measured) but for at most 0.1 % of the ink; part 41's differs from it by more (its last digit).
   const auto differing = [](const GrayImage& x, const GrayImage& y) {
     std::size_t n = 0;
     for (std::size_t i = 0; i < x.pixels.size(); ++i) n += std::abs(x.pixels[i] - y.pixels[i]) > 0.25f ? 1 : 0;
     return n;
   };
   const std::size_t ink = dark_pixels(check);
-  EXPECT_LE(differing(check, m42), ink / 200) << "ink " << ink;
+  EXPECT_LE(differing(check, m42), ink / 1000) << "ink " << ink;
   // Part 41's ends its serial elsewhere: its jumps, and so its view, differ, or its pixels do.
-  if (check.pixels.size() == m41.pixels.size()) EXPECT_GT(differing(check, m41), ink / 50) << "ink " << ink;
+  if (check.pixels.size() == m41.pixels.size()) {
+    EXPECT_GT(differing(check, m41), ink / 50) << "ink " << ink;
+  }
 }
 
 }  // namespace

@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libsqlite3-dev sqlite3 libpq-dev postgresql   # serial store: SQLite (default) and PostgreSQL (tests start a private server)
   libcpp-httplib-dev                            # the station's HTTP + JSON interface (marker serve --http)
+  libmodbus-dev python3-pymodbus                # Modbus TCP (marker serve --modbus) and the independent client its tests drive
   nodejs                                        # parses the operator page's script (StationHttp test)
   libssl-dev                                    # SHA-256 of job files in the audit log (libcrypto)
   libhowardhinnant-date-dev tzdata              # time zones for dates, shifts and counter resets

@@ -17,6 +17,7 @@
 #include "marker/cli/output_options.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/pen_options.hpp"
+#include "marker/cli/unread_options.hpp"
 #include "marker/codes/code_data.hpp"
 #include "marker/codes/code_json.hpp"
 #include "marker/job/job.hpp"
@@ -152,8 +153,9 @@ int run_code(const Args& a) {
 
 Command make_code_command() {
   auto a = std::make_shared<Args>();
+  auto sub_app = std::make_shared<CLI::App*>();
   return Command(
-      [a](CLI::App& app) {
+      [a, sub_app](CLI::App& app) {
         auto* sub = app.add_subcommand("code", "mark one 2-D code or barcode on the simulated scanner and read it back");
         sub->add_option("symbology", a->symbology, "datamatrix, gs1-datamatrix, qr, code128, gs1-128")->required();
         sub->add_option("data", a->data, "data to encode (GS1: (01)09506000134352(17)261231(10)LOT42(21)SN1)")->required();
@@ -169,9 +171,16 @@ Command make_code_command() {
                         "write the code reader's camera picture (PNG, pixel size in pHYs)");
         add_setting(*sub, kRequireGrade, a->require_grade);
         sub->add_flag("--json", a->json, "print one JSON object with the code's figures");
+        *sub_app = sub;
         return sub;
       },
-      [a] { return run_code(*a); });
+      [a, sub_app] {
+        // Options nothing reads are refused (unread_options.hpp) before anything is marked.
+        refuse_unread_pen_options(**sub_app, a->pen);
+        const SettingRef dot[] = {&kDotShape, &kDotSize};
+        refuse_unread(**sub_app, dot, a->code.style == "dot", "only dot-style modules read it (give --style dot)");
+        return run_code(*a);
+      });
 }
 
 }  // namespace mark::cli

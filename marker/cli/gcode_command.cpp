@@ -25,6 +25,7 @@
 #include "marker/cnc/stroke_gaps.hpp"
 #include "marker/cnc/tool/tool_measure.hpp"
 #include "marker/cnc/toolpath_preview.hpp"
+#include "marker/layout/figure_json.hpp"
 #include "marker/limits/cnc_settings.hpp"
 #include "marker/output/output_file.hpp"
 
@@ -119,11 +120,6 @@ void warn_flat(const VCarveResult& r, const VCarveSettings& v, nlohmann::json& w
                           "crosses: clear them with --flat-bottom MM --cleanup-output FILE, or allow a deeper "
                           "--max-depth",
                           r.depth_limit_mm, r.flat_area_mm2));
-}
-
-nlohmann::json box_json(const Box& b) {
-  if (b.empty()) return nullptr;
-  return {{"x_min", b.min.x()}, {"y_min", b.min.y()}, {"x_max", b.max.x()}, {"y_max", b.max.y()}};
 }
 
 int run_gcode(GcodeArgs& a) {

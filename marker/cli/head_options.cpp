@@ -32,6 +32,10 @@ HeadModel simulated_head(const HeadArgs& a) {
   // Checked while parsing too; a caller from code gets the same words.
   if (a.zeta) {
     check_setting(kHeadZeta, *a.zeta);
+    // A first-order head has no damping: the value would be accepted and change nothing.
+    if (!h.second_order)
+      throw InputError(flag(kHeadZeta) + " does not apply: head " + h.name + " is first order (give " +
+                       flag(kHeadModel) + " second)");
     h.zeta = *a.zeta;
   }
   check_setting(kLaserRise, a.laser_rise_us);

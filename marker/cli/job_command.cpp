@@ -21,6 +21,7 @@
 #include "marker/job/auto_speed.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/mark_requirement.hpp"
+#include "marker/layout/figure_json.hpp"
 #include "marker/limits/device_settings.hpp"
 #include "marker/limits/head_settings.hpp"
 #include "marker/limits/layout_settings.hpp"
@@ -132,7 +133,7 @@ int run_check(const CheckArgs& a) {
                               {"text", texts[i].text}, {"glyphs", compiled.figure.glyphs.size()},
                               {"strokes", compiled.plan.strokes},
                               {"planned_time_s", duration_s},
-                              {"bounds_mm", {b.min.x(), b.min.y(), b.max.x(), b.max.y()}},
+                              {"bounds_mm", box_json(b)},
                               {"power_pct", pen.laser.power_pct},
                               {"frequency_khz", pen.laser.frequency_khz},
                               {"pulse_width_ns", pen.laser.pulse_width_ns},

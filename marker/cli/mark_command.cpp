@@ -42,6 +42,7 @@
 #include "marker/cli/option_values.hpp"
 #include "marker/cli/output_options.hpp"
 #include "marker/cli/pen_options.hpp"
+#include "marker/cli/unread_options.hpp"
 #include "marker/cli/plant_option.hpp"
 #include "marker/codes/code_data.hpp"
 #include "marker/codes/code_json.hpp"
@@ -53,6 +54,7 @@
 #include "marker/job/sim_evaluator.hpp"
 #include "marker/limits/code_settings.hpp"
 #include "marker/limits/device_settings.hpp"
+#include "marker/limits/fill_settings.hpp"
 #include "marker/limits/marking_settings.hpp"
 #include "marker/limits/pen_settings.hpp"
 #include "marker/limits/production_settings.hpp"
@@ -364,6 +366,21 @@ struct MarkModes {
   std::vector<const CLI::Option*> shared;      // either mode
 };
 
+// The options of this mark that nothing reads are refused (unread_options.hpp), before anything
+// is laid out or opened.
+void refuse_unread_mark_options(const CLI::App& sub, const MarkArgs& a) {
+  refuse_unread_pen_options(sub, a.pen);
+  const bool filled = a.layout.fill == "hatch", code = !a.code.empty();
+  const SettingRef rule[] = {&kFillRule};
+  refuse_unread(sub, rule, filled, "only a filled text reads it (give --fill hatch)");
+  refuse_unread(sub, kHatchSettingList, filled || code, "only a hatch fill reads it (give --fill hatch, or --code)");
+  refuse_unread(sub, kCodeSettingList, code, "only a code reads it (give --code SYMBOLOGY:DATA)", "code-");
+  const SettingRef dot[] = {&kDotShape, &kDotSize};
+  refuse_unread(sub, dot, a.code_args.style == "dot", "only dot-style modules read it (give --code-style dot)",
+                "code-");
+  refuse_unread(sub, kLmcSettingList, a.device != "sim", "only an LMC board reads it (give --device lmc…)");
+}
+
 int run_mark_mode(const MarkArgs& a, const MarkModes& modes) {
   const auto in = [](const std::vector<const CLI::Option*>& list, const CLI::Option* o) {
     return std::find(list.begin(), list.end(), o) != list.end();
@@ -371,6 +388,7 @@ int run_mark_mode(const MarkArgs& a, const MarkModes& modes) {
   if (a.production.job.empty()) {
     for (const CLI::Option* o : modes.production)
       if (o->count() > 0) throw InputError(o->get_name() + " applies to a production run: give --job FILE");
+    refuse_unread_mark_options(*modes.sub, a);
     return run_mark(a);
   }
   for (const CLI::Option* o : modes.sub->get_options()) {
@@ -440,6 +458,7 @@ Command make_mark_command() {
             add_setting(*sub, kStation, p.station),
             add_setting(*sub, kRemark, p.remark),
             add_setting(*sub, kRemarkReason, p.reason),
+            add_setting(*sub, kAllowChangedJob, p.allow_changed_job),
             add_setting(*sub, kCreateCounters, p.create_counters)};
         // --store, --store-wait-ms, --store-attempts: the production run's.
         const std::size_t before = sub->get_options().size();

@@ -198,6 +198,8 @@ int run_mark_job(const MarkJobArgs& a) {
     throw InputError("--remark " + std::to_string(*a.remark) +
                      " marks one part again with its recorded texts: --count and --set do not apply");
   if (!a.reason.empty() && !a.remark) throw InputError("--reason applies to a re-mark: give --remark ID");
+  if (a.allow_changed_job && !a.remark)
+    throw InputError("--allow-changed-job does not apply: only a re-mark reads it (give --remark ID)");
   std::string bytes;
   const JobFile job = read_job_file(a.job, &bytes);
   const auto variables = job_variables(job, parse_sets(a.sets));
@@ -240,6 +242,7 @@ int run_mark_job(const MarkJobArgs& a) {
   options.job.stop = &interrupt_flag();
   options.job.inject = inject.drain;
   options.remark_reason = a.reason;
+  options.allow_changed_job = a.allow_changed_job;
   // Every object's dose and trace, read off the scanner before the next object clears them.
   std::optional<PartPicture> picture;
   if (outputs.any())

@@ -28,6 +28,7 @@ struct MarkJobArgs {
   bool create_counters = false;
   std::optional<long long> remark;
   std::string reason;
+  bool allow_changed_job = false;
   std::string device;  // empty: the job's
   std::string inject;
   bool virtual_time = false;

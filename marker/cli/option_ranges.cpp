@@ -37,13 +37,6 @@ CLI::Validator whole_validator(const WholeRange& range) {
       "", "range");
 }
 
-// The flag with the prefix after its dashes: "--module" → "--code-module".
-std::string flag_of(const SettingName& n, std::string_view prefix) {
-  const std::string flag(n.flag);
-  if (prefix.empty()) return flag;
-  return "--" + std::string(prefix) + flag.substr(2);
-}
-
 // Help texts are plain: the docs' backticks are left out.
 std::string plain(std::string_view text) {
   std::string out;
@@ -86,6 +79,12 @@ CLI::Option* add_numeric_setting(CLI::App& app, const S& s, T& value, std::strin
 }
 
 }  // namespace
+
+std::string flag_of(const SettingName& n, std::string_view prefix) {
+  const std::string flag(n.flag);
+  if (prefix.empty()) return flag;
+  return "--" + std::string(prefix) + flag.substr(2);
+}
 
 std::string setting_description(const SettingRef& setting) {
   const std::string help = with_default(plain(name_of(setting).help), setting);

@@ -24,6 +24,9 @@ inline void check_range(std::string_view option, const std::optional<double>& v,
   if (v) check_range(option, *v, range);
 }
 
+// A setting's flag with the prefix after its dashes: "--module" → "--code-module".
+std::string flag_of(const SettingName& n, std::string_view prefix = {});
+
 // The option of a setting (marker/limits/setting.hpp): its flag (after `prefix`: "code-" turns
 // --module into --code-module), its help with its range and its default in words, its range or
 // choices checked while parsing. The value starts at the setting's default where it has one.

@@ -15,6 +15,7 @@
 #include "marker/cli/option_values.hpp"
 #include "marker/cli/output_options.hpp"
 #include "marker/cli/print.hpp"
+#include "marker/layout/figure_json.hpp"
 #include "marker/limits/peen_settings.hpp"
 #include "marker/cli/print.hpp"
 #include "marker/output/output_file.hpp"
@@ -157,8 +158,7 @@ int run_peen(const PeenArgs& a) {
 
   if (a.json) {
     nlohmann::json out = result;
-    out["window_mm"] = {{"x_min", window.min.x()}, {"y_min", window.min.y()},
-                        {"x_max", window.max.x()}, {"y_max", window.max.y()}};
+    out["window_mm"] = box_json(window);
     out["pitch_mm"] = dots.pitch_mm;
     out["gantry"] = gantry_to_json(gantry);
     if (a.compare) out["compare"] = rows;

@@ -6,6 +6,7 @@
 #include "base/error.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
+#include "marker/cli/unread_options.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/limits/pen_settings.hpp"
 
@@ -64,6 +65,15 @@ HeadProfile planner_profile(const PenArgs& a, const HeadModel& head) {
   return p;
 }
 
+bool feeds_forward(const PenArgs& a) {
+  return a.feed_forward || a.ff_lag_us.value_or(0) > 0 || a.ff_inertia_us2.value_or(0) > 0;
+}
+
+void refuse_unread_pen_options(const CLI::App& app, const PenArgs& a) {
+  const bool lookahead = a.lookahead || feeds_forward(a);
+  refuse_unread(app, kPenSettingList, [&](const SettingRef& s) { return pen_setting_unread(s, a.corner, lookahead); });
+}
+
 Pen make_pen(const PenArgs& a, const HeadModel& head) {
   // The other options' ranges were checked while parsing; these depend on the head and are
   // checked here only, with the ranges a job file's pen is checked with.
@@ -73,8 +83,7 @@ Pen make_pen(const PenArgs& a, const HeadModel& head) {
   check_range(kTick.name.flag, a.tick_us, head_tick_range(head));
   PenRules rules;
   rules.lookahead = a.lookahead;
-  // A model given by hand turns feed-forward on; a zero one compensates nothing, so it does not.
-  rules.feed_forward = a.feed_forward || a.ff_lag_us.value_or(0) > 0 || a.ff_inertia_us2.value_or(0) > 0;
+  rules.feed_forward = feeds_forward(a);
   Pen pen = pen_for_profile(planner_profile(a, head), parse_corner_strategy(a.corner),
                             a.speed_mm_s, a.tick_us * 1e-6, rules);
   if (a.jump_speed_mm_s) {
@@ -118,7 +127,7 @@ std::string pen_args_string(const Pen& p) {
   arg(kTick, p.tick_s * 1e6);
   arg(kLaserOnDelay, p.laser_on_delay_s * 1e6);
   arg(kLaserOffDelay, p.laser_off_delay_s * 1e6);
-  arg(kTrackingError, p.tracking_error_s * 1e6);
+  if (!pen_setting_unread(&kTrackingError, to_string(p.corner), true)) arg(kTrackingError, p.tracking_error_s * 1e6);
   switch (p.corner) {
     case CornerStrategy::delays:
       arg(kJumpDelay, p.jump_delay_s * 1e6);

@@ -45,6 +45,14 @@ HeadProfile planner_profile(const PenArgs& args, const HeadModel& head);
 // naming a bad option (unknown corner strategy, a negative or non-finite value).
 Pen make_pen(const PenArgs& args, const HeadModel& head);
 
+// Whether the pen pre-compensates by the head model: --feed-forward, or a model given by hand (a
+// zero one compensates nothing, so it does not).
+bool feeds_forward(const PenArgs& args);
+// Refuses, in one line, a pen option this pen never reads (unread_options.hpp): a delays setting
+// on a blanking pen, a blanking one on a delays pen, a look-ahead one without --lookahead or
+// --feed-forward, the tracking error on a pen with no corner strategy.
+void refuse_unread_pen_options(const CLI::App& app, const PenArgs& args);
+
 // Options that reproduce `pen` exactly through make_pen, whatever the head and profile:
 // "--corner none --speed 2000 --jump-speed 9600 --tick 10 --lookahead --accel 2.2e+07 …".
 // Numbers are printed in their shortest exact form.

@@ -7,6 +7,7 @@
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/output_options.hpp"
+#include "marker/layout/figure_json.hpp"
 #include "marker/limits/marking_settings.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/preview/figure_preview.hpp"
@@ -56,8 +57,7 @@ Command make_preview_command() {
                                     {"glyphs", laid.figure.glyphs.size()},
                                     {"elements", laid.figure.element_count()},
                                     {"mark_length_mm", laid.figure.mark_length_mm()},
-                                    {"bounds_mm",
-                                     {{"x_min", b.min.x()}, {"y_min", b.min.y()}, {"x_max", b.max.x()}, {"y_max", b.max.y()}}},
+                                    {"bounds_mm", box_json(b)},
                                     {"field_mm", laid.field.size_mm}};
           std::cout << j.dump(2) << "\n";
           return 0;

@@ -1,8 +1,8 @@
 // `marker serve --job FILE [--device D] [--listen 127.0.0.1:PORT] [--http 127.0.0.1:PORT]
 //  [--store PATH|URL] [--station NAME] [--set NAME=VALUE …] [--create-counters] [--virtual-time]
-//  [--max-connections N]`: the marking station (docs/station.md). Loads the job once, keeps the
+//  [--modbus HOST:PORT [--modbus-allow ADDR[/BITS] …]] [--max-connections N]`: the marking station (docs/station.md). Loads the job once, keeps the
 // device open and marks on command over the TCP line protocol and, with --http, over HTTP +
-// JSON (marker/station/). One log line per event on stderr. SIGTERM / Ctrl-C: a part in progress
+// JSON, with --modbus over Modbus TCP (marker/station/). One log line per event on stderr. SIGTERM / Ctrl-C: a part in progress
 // is aborted with the laser off and recorded aborted (its numbers void), every connection is
 // closed, exit 0.
 #include <chrono>
@@ -10,6 +10,7 @@
 #include <ctime>
 #include <mutex>
 
+#include "base/error.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/option_ranges.hpp"
@@ -19,6 +20,7 @@
 #include "marker/limits/production_settings.hpp"
 #include "marker/limits/station_settings.hpp"
 #include "marker/station/http_server.hpp"
+#include "marker/station/modbus_server.hpp"
 #include "marker/station/tcp_server.hpp"
 
 namespace mark::cli {
@@ -28,6 +30,8 @@ struct ServeArgs {
   MarkJobArgs job;
   std::string listen;      // the settings' defaults (add_setting)
   std::string http;        // empty: no HTTP interface
+  std::string modbus;      // empty: no Modbus interface
+  std::vector<std::string> modbus_allow;
   int max_connections = 0;
 };
 
@@ -50,6 +54,12 @@ int serve(const ServeArgs& a) {
   const ListenAddress address = parse_listen_address(a.listen, "--listen");
   std::optional<ListenAddress> http_address;
   if (!a.http.empty()) http_address = parse_listen_address(a.http, "--http");
+  std::optional<ListenAddress> modbus_address;
+  if (!a.modbus.empty()) modbus_address = parse_host_port(a.modbus, "--modbus");
+  std::vector<AllowedNet> allow;
+  for (const std::string& net : a.modbus_allow) allow.push_back(parse_allowed_net(net, "--modbus-allow"));
+  if (!allow.empty() && !modbus_address) throw InputError("--modbus-allow: give --modbus HOST:PORT too");
+  if (modbus_address) check_modbus_access(*modbus_address, allow);  // before the store and device open
   JobSource source(a.job);
   Station station(source, log_line);
   TcpServer server(station, address, a.max_connections, log_line);
@@ -59,8 +69,14 @@ int serve(const ServeArgs& a) {
     log_line("http on " + http_address->host + ":" + std::to_string(http->port()) + " (operator page: http://" +
              http_address->host + ":" + std::to_string(http->port()) + "/)");
   }
+  std::unique_ptr<ModbusServer> modbus;
+  if (modbus_address) {
+    modbus = std::make_unique<ModbusServer>(station, *modbus_address, allow, a.max_connections, log_line);
+    log_line("modbus on " + modbus_address->host + ":" + std::to_string(modbus->port()));
+  }
   log_line("listening on " + address.host + ":" + std::to_string(server.port()) + " job " + a.job.job);
   server.serve([] { return interrupt_flag().requested(); });
+  if (modbus) modbus->stop();  // first: no start coil can begin a part after the abort below
   // SIGTERM: the laser off and a part in progress recorded aborted before anything closes.
   const StationState was = station.abort();
   log_line(std::string("stopping (state ") + std::string(to_string(was)) + ")");
@@ -83,6 +99,8 @@ Command make_serve_command() {
         add_setting(*sub, kDevice, p.device);
         add_setting(*sub, kListen, a->listen);
         add_setting(*sub, kHttp, a->http);
+        add_setting(*sub, kModbus, a->modbus);
+        add_setting(*sub, kModbusAllow, a->modbus_allow);
         add_setting(*sub, kMaxConnections, a->max_connections);
         add_setting(*sub, kSet, p.sets);
         add_setting(*sub, kStation, p.station);

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "base/error.hpp"
+#include "marker/cli/inject_option.hpp"
 #include "marker/cli/part_preview.hpp"
 #include "marker/store/store_location.hpp"
 
@@ -44,8 +45,13 @@ std::unique_ptr<JobSource::Loaded> JobSource::open_job(const std::string& path,
   start_station(*store_, l->context, l->job, a);
   const std::string spec = args_.device.empty() ? l->job.device : args_.device;
   if (!opened_.device) {
+    // --inject as `marker mark --job` takes it (the tests' device fault and drain faults);
+    // `marker serve` itself declares no --inject.
+    const InjectArg inject = args_.inject.empty() ? InjectArg{} : parse_inject(args_.inject);
     SimSettings sim;
     sim.virtual_time = args_.virtual_time;
+    sim.fault_at = inject.device_fault_at;
+    options_.job.inject = inject.drain;
     opened_ = open_device(spec, object_spec(l->job, l->job.objects.front(), "", *l->fonts), sim);
     device_spec_ = spec;
     options_.job.evaluator = opened_.simulator.get();

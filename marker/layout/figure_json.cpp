@@ -39,6 +39,11 @@ nlohmann::json element_to_json(const Element& e) {
   return j;
 }
 
+nlohmann::json box_json(const Box& b) {
+  if (b.empty()) return nullptr;
+  return {{"x_min", b.min.x()}, {"y_min", b.min.y()}, {"x_max", b.max.x()}, {"y_max", b.max.y()}};
+}
+
 nlohmann::json figure_to_json(const Figure& figure) {
   nlohmann::json glyphs = nlohmann::json::array();
   for (const PlacedGlyph& g : figure.glyphs) {
@@ -52,7 +57,7 @@ nlohmann::json figure_to_json(const Figure& figure) {
   }
   const Box b = figure.bounds();
   nlohmann::json out = {{"glyphs", std::move(glyphs)}};
-  if (!b.empty()) out["bounds"] = {{"min", xy(b.min)}, {"max", xy(b.max)}};
+  if (!b.empty()) out["bounds_mm"] = box_json(b);
   return out;
 }
 

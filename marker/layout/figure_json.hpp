@@ -10,6 +10,9 @@
 namespace mark {
 
 nlohmann::json element_to_json(const Element& element);
+// A box as every JSON output names one ("bounds_mm", "cut_bounds_mm", …): {"x_min", "y_min",
+// "x_max", "y_max"} in mm; null for an empty box.
+nlohmann::json box_json(const Box& box);
 nlohmann::json figure_to_json(const Figure& figure);
 
 }  // namespace mark

@@ -41,6 +41,11 @@ inline constexpr Count kFrameLaps{
 inline constexpr Toggle kNoOrientationMark{
     {"--no-orientation-mark", "", "frame: trace only the job's outline, not the F at its +x side"}};
 
+// What only an LMC board reads (a real one, its capture or the emulated one), not the simulated
+// scanner.
+inline constexpr SettingRef kLmcSettingList[] = {&kCorrectionFile, &kSwapXy,  &kFlipX,             &kFlipY,
+                                                 &kLaserBit,       &kRedBit,  &kPolygonDelayUnits, &kChordTolerance};
+
 inline constexpr SettingRef kDeviceSettingList[] = {
     &kDevice,  &kProbeDevice, &kCorrectionFile,    &kSwapXy,         &kFlipX,      &kFlipY,
     &kLaserBit, &kRedBit, &kPolygonDelayUnits, &kChordTolerance, &kFrameShape, &kFrameSpeed, &kFrameLaps,

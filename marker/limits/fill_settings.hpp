@@ -52,6 +52,10 @@ inline constexpr Bounds kFillChordBounds{1e-5, 0.01, "mm"};
 inline constexpr SettingRef kFillSettingList[] = {
     &kFill,       &kFillRule,      &kHatchSpacing,     &kHatchAngle,   &kHatchDirection, &kHatchOrder,
     &kHatchInset, &kContourPasses, &kContourPlacement, &kContourInset, &kContourSpacing};
+// What a hatch fill reads, of a filled text or of a code's modules: all but --fill and its rule.
+inline constexpr std::span<const SettingRef> kHatchSettingList = std::span(kFillSettingList).subspan(2);
+static_assert(kFillSettingList[0] == SettingRef{&kFill} && kFillSettingList[1] == SettingRef{&kFillRule});
+
 inline constexpr SettingTable kFillSettings{"fill", "Hatch fill", "objects[].fill, objects[].hatch",
                                             kFillSettingList};
 

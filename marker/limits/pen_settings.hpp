@@ -120,6 +120,22 @@ inline constexpr Count kPasses{
      "marking and its commands run again"},
     {1, 100}, 1};
 
+// The pen settings only one corner strategy or the look-ahead planner reads
+// (marker/plan/plan_delays.cpp, plan_blanking.cpp, speed_plan.cpp). Given to a pen that does not
+// use them they would be accepted and change nothing: the user who set a polygon delay on a
+// blanking pen believes the corners got it. Both the command line and job files refuse them
+// through pen_setting_unread().
+inline constexpr SettingRef kDelaysPenSettings[] = {&kJumpDelay, &kJumpSettle, &kMarkDelay, &kPolygonDelay};
+inline constexpr SettingRef kBlankingPenSettings[] = {&kBlankAngle, &kRunIn,  &kMinRunIn,
+                                                      &kRunOut,     &kSettle, &kJoinSpeed};
+inline constexpr SettingRef kLookaheadPenSettings[] = {&kAccel,      &kJumpAccel,        &kCurveAccel, &kAccelLimit,
+                                                       &kJunctionDv, &kLaserSwitchSpeed, &kMinLitSpeed};
+
+// Why a pen with this corner strategy ("blanking", "delays", "none") and planner (look-ahead or
+// feed-forward on, or off) never reads `s`: "only a pen with corner delays reads it (this pen's
+// corner is blanking)"; nullopt when it does.
+std::optional<std::string> pen_setting_unread(const SettingRef& s, std::string_view corner, bool lookahead);
+
 inline constexpr SettingRef kPenSettingList[] = {
     &kCorner,      &kMarkSpeed,      &kJumpSpeed,   &kTick,       &kHeadProfile, &kLookahead,   &kFeedForward,
     &kLaserOnDelay, &kLaserOffDelay, &kJumpDelay,   &kJumpSettle, &kMarkDelay,   &kPolygonDelay, &kBlankAngle,

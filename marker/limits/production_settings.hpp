@@ -106,6 +106,10 @@ inline constexpr Count kRemark{
     {"--remark", "", "--job: mark the part of audit row ID again (no number consumed)"}, {1, INT64_MAX}};
 inline constexpr Text kRemarkReason{
     {"--reason", "", "--job --remark: why the part is marked again (kept in the audit log)"}, {}, "none"};
+inline constexpr Toggle kAllowChangedJob{
+    {"--allow-changed-job", "",
+     "--job --remark: re-mark a part although the job file changed since it was marked (the audit row notes both "
+     "versions)"}};
 inline constexpr Toggle kCreateCounters{
     {"--create-counters", "", "--job: create the job's counters the store does not know, each at its start"}};
 inline constexpr Text kStation{
@@ -139,7 +143,7 @@ inline constexpr Count kStoreAttempts{
      "attempts of an allocation or an outcome write before giving up (the outcome stays in the station's journal)"},
     kStoreAttemptsRange, kStoreAttemptsDefault};
 
-inline constexpr SettingRef kRunSettingList[] = {&kSet,         &kPartCount,    &kRemark,   &kRemarkReason, &kCreateCounters, &kStation,
+inline constexpr SettingRef kRunSettingList[] = {&kSet,         &kPartCount,    &kRemark,   &kRemarkReason, &kAllowChangedJob, &kCreateCounters, &kStation,
                                                  &kCreateStart, &kSerialValue, &kReserveCount, &kSince,    &kLogLimit,
                                                  &kLogSerial,   &kLogText,      &kStoreWait, &kStoreAttempts, &kQuickCheck};
 inline constexpr SettingTable kRunSettings{"run", "Production run and serial store", "", kRunSettingList};

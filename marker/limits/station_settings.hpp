@@ -14,10 +14,18 @@ inline constexpr Text kHttp{
     {"--http", "", "HTTP + JSON, event stream and operator page on HOST:PORT, loopback only (port 0: a free one, logged)"},
     {},
     "off"};
+inline constexpr Text kModbus{
+    {"--modbus", "", "Modbus TCP register map on HOST:PORT (port 0: a free one, logged); beyond loopback it needs --modbus-allow"},
+    {},
+    "off"};
+inline constexpr Text kModbusAllow{
+    {"--modbus-allow", "", "--modbus: an IPv4 ADDR[/BITS] whose clients may connect (repeatable); others are closed unread"},
+    {},
+    "127.0.0.1 only (loopback when no list)"};
 inline constexpr Count kMaxConnections{
-    {"--max-connections", "", "TCP clients at a time (one more gets ERR toomany)"}, {1, 64}, 8};
+    {"--max-connections", "", "TCP clients at a time, and Modbus clients (one more gets ERR toomany / is closed)"}, {1, 64}, 8};
 
-inline constexpr SettingRef kStationSettingList[] = {&kListen, &kHttp, &kMaxConnections};
+inline constexpr SettingRef kStationSettingList[] = {&kListen, &kHttp, &kModbus, &kModbusAllow, &kMaxConnections};
 inline constexpr SettingTable kStationSettings{"station", "Station", "", kStationSettingList};
 
 }  // namespace mark

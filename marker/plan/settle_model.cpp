@@ -19,20 +19,29 @@ double settled_run_in_mm(const RunInRequest& r) {
   const double vt = r.speed_mm_s * r.tau_s;  // mm per multiple k
   const double k_min = r.min_length_mm / vt;
   const Point v_in = r.speed_mm_s * r.direction;
-  double k = k_min;
-  for (int it = 0; it < 8; ++it) {
+  // The transient left when the laser switches on after a run-in of k·v·τ: the join's A, decayed
+  // over the run-in (k·τ) and the laser's τ delay.
+  const auto left_mm = [&](double k) {
     const Point d = (r.start - k * vt * r.direction) - r.from;
     const double dist = d.norm();
     const Point v_join = dist > 0 ? Point(r.join_speed_mm_s / dist * d) : Point(0, 0);
     const double t_join = dist > 0 ? dist / r.join_speed_mm_s : 0.0;
-    const double a = transient_mm(r.velocity_mm_s, v_join, t_join, v_in, r.tau_s);
-    // The laser switches on τ after the run-in ends: k·τ + τ of decay in all.
-    const double k_new = std::max(k_min, settle_time_s(a, r.settle_mm, r.tau_s) / r.tau_s - 1.0);
-    const bool done = std::abs(k_new - k) < 1e-2;  // the run-in is rounded up to ticks anyway
-    k = k_new;
-    if (done) break;
+    return transient_mm(r.velocity_mm_s, v_join, t_join, v_in, r.tau_s) * std::exp(-(k + 1));
+  };
+  // Steps of 0.05 v·τ, then the step that settles halved down to 1e-4 v·τ; A is at most a few
+  // (jump speed + v)·τ, so ln(A/ε) bounds the search well below k_min + 40.
+  constexpr double kStep = 0.05, kSpan = 40;
+  if (left_mm(k_min) <= r.settle_mm) return k_min * vt;
+  for (double k = k_min + kStep; k < k_min + kSpan; k += kStep) {
+    if (left_mm(k) > r.settle_mm) continue;
+    double lo = k - kStep, hi = k;  // lo leaves too much, hi settles
+    while (hi - lo > 1e-4) {
+      const double mid = (lo + hi) / 2;
+      (left_mm(mid) <= r.settle_mm ? hi : lo) = mid;
+    }
+    return hi * vt;
   }
-  return k * vt;
+  return (k_min + kSpan) * vt;
 }
 
 }  // namespace mark

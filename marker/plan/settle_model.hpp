@@ -33,9 +33,13 @@ struct RunInRequest {
   double min_length_mm;
 };
 
-// Blanking run-in length (mm, not yet rounded to ticks): k·v·τ with k = ln(A/ε) − 1, where A
-// is the transient the join into the run-in leaves — and A grows with k (a longer run-in moves
-// its start further away), so the two are iterated to agreement.
+// Blanking run-in length (mm, not yet rounded to ticks): the shortest k·v·τ (k ≥ the pen's
+// least) after which the transient A the join into the run-in leaves has decayed to ε by the time
+// the τ-delayed laser switches on: A·e^−(k+1) ≤ ε. A depends on k, and not monotonically: a
+// longer run-in moves its start back towards where the mirrors are (a shorter, slower-settling
+// join), past them and behind (a reversing join). A fixed-point iteration of k = ln(A/ε) − 1 could
+// stop where the laser comes on unsettled — a raster hatch's next line ahead on the same row lit
+// 50 µm early (issue 23) — so k is searched upward.
 double settled_run_in_mm(const RunInRequest& r);
 
 }  // namespace mark

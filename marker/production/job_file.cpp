@@ -127,7 +127,15 @@ CounterSpec parse_counter(JsonReader c, const std::string& name, const TimeZone&
 JobPen parse_pen(JsonReader p, const std::string& name, const HeadModel& head) {
   JobPen pen;
   pen.name = name;
-  const CornerStrategy corner = parse_corner_strategy(p.choice(kCorner).value_or(std::string(kCorner.value)));
+  const std::string corner_name = p.choice(kCorner).value_or(std::string(kCorner.value));
+  const CornerStrategy corner = parse_corner_strategy(corner_name);
+  // A key this pen never reads is refused, as the command line refuses its option: a job file
+  // has no look-ahead pen, so only the corner strategy decides.
+  for (const SettingRef& s : kPenSettingList) {
+    const std::string_view key = name_of(s).key;
+    if (!key.empty() && p.has(key))
+      if (const std::optional<std::string> why = pen_setting_unread(s, corner_name, false)) p.fail(key, *why);
+  }
   // The speeds and the tick within the head's limits, in the command line's words.
   const double speed = p.number(kMarkSpeed, head_speed_range(kMarkSpeed, head)).value_or(kMarkSpeed.fallback());
   const double tick_us = p.number(kTick, head_tick_range(head)).value_or(kTick.fallback());

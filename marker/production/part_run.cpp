@@ -132,7 +132,8 @@ PartResult PartRunner::mark_next(SysTime now, const PartOptions& options) {
 PartResult PartRunner::remark(std::int64_t original, SysTime now, const PartOptions& options) {
   context_.now = now;
   if (options.phase) options.phase(PartPhase::allocating, {});
-  const Allocation a = store_.remark(original, context_, options.remark_reason);  // refuses a row of another job
+  // Refuses a row of another job, or of this one changed since, unless allowed.
+  const Allocation a = store_.remark(original, context_, options.remark_reason, options.allow_changed_job);
   PartResult part;
   part.mark_id = a.mark_id;
   part.remark_of = a.remark_of;

@@ -83,6 +83,7 @@ struct PartOptions {
   // Told at each step of a part with the values it consumed (so far): the kill test's probe.
   std::function<void(PartPhase, const std::map<std::string, std::int64_t>& serials)> phase;
   std::string remark_reason;  // a re-mark's reason, kept in its audit row
+  bool allow_changed_job = false;  // a re-mark with a job file changed since (noted in its row)
   // Told after each object's device job with what it marked (its plan), before the next object
   // starts: where the simulated scanner's dose and trace of that object are read, since the
   // next job clears them (marker/production/part_picture.hpp).

@@ -16,7 +16,7 @@
 
 namespace mark {
 
-ListenAddress parse_listen_address(const std::string& text, const std::string& option) {
+ListenAddress parse_host_port(const std::string& text, const std::string& option) {
   const std::size_t colon = text.rfind(':');
   if (colon == std::string::npos)
     throw InputError(option + " " + text + ": give HOST:PORT (e.g. 127.0.0.1:5555; port 0 picks a free one)");
@@ -30,6 +30,13 @@ ListenAddress parse_listen_address(const std::string& text, const std::string& o
   in_addr addr{};
   if (::inet_pton(AF_INET, a.host.c_str(), &addr) != 1)
     throw InputError(option + " " + text + ": the host must be an IPv4 address (127.0.0.1)");
+  return a;
+}
+
+ListenAddress parse_listen_address(const std::string& text, const std::string& option) {
+  ListenAddress a = parse_host_port(text, option);
+  in_addr addr{};
+  ::inet_pton(AF_INET, a.host.c_str(), &addr);
   if ((ntohl(addr.s_addr) >> 24) != 127)
     throw InputError(option + " " + text +
                      ": only loopback addresses (127.0.0.0/8) for now: the station has no authentication yet, "

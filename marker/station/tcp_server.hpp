@@ -26,6 +26,9 @@ struct ListenAddress {
 // "127.0.0.1:5555", "localhost:0", ":5555" (127.0.0.1). Throws InputError naming `option`, for a
 // malformed address, a port outside 0–65535, or an address that is not loopback.
 ListenAddress parse_listen_address(const std::string& text, const std::string& option);
+// The same for any IPv4 address (0.0.0.0, a plant network's): for an interface that guards
+// its peers otherwise (Modbus's --modbus-allow).
+ListenAddress parse_host_port(const std::string& text, const std::string& option);
 
 class TcpServer {
  public:

@@ -303,16 +303,21 @@ OutcomeWrite SerialStore::record_outcome(std::int64_t mark_id, const OutcomeReco
                    kind);
 }
 
-Allocation SerialStore::remark(std::int64_t original, const MarkContext& ctx, const std::string& reason) {
+Allocation SerialStore::remark(std::int64_t original, const MarkContext& ctx, const std::string& reason,
+                               bool allow_changed_job) {
   return attempt(StoreStep::allocate, [&] {
     auto tx = backend_->begin();
     std::optional<AuditRow> row = tx->audit_row(original);
     if (!row || (row->mark.kind != AuditKind::mark && row->mark.kind != AuditKind::remark))
       throw InputError("--remark " + std::to_string(original) + ": the store " + describe() +
                        " has no mark with that id (see `marker log`)");
-    if (row->mark.job_sha256 != ctx.job_sha256)
+    const bool job_changed = row->mark.job_sha256 != ctx.job_sha256;
+    if (job_changed && !allow_changed_job)
       throw InputError("--remark " + std::to_string(original) + ": that part was marked with job " + row->mark.job +
-                       " (SHA-256 " + row->mark.job_sha256.substr(0, 12) + "…), not with this job file");
+                       " (SHA-256 " + row->mark.job_sha256.substr(0, 12) +
+                       "…), not with this job file (to re-mark it with this one: --allow-changed-job, which the "
+                       "audit log notes)");
+    const std::string marked_with = row->mark.job + " (SHA-256 " + row->mark.job_sha256.substr(0, 12) + "…)";
     // The part is its first mark: a re-mark of a re-mark links that one.
     for (int up = 0; row->mark.kind == AuditKind::remark && row->mark.remark_of && up < 64; ++up) {
       std::optional<AuditRow> first = tx->audit_row(*row->mark.remark_of);
@@ -337,6 +342,11 @@ Allocation SerialStore::remark(std::int64_t original, const MarkContext& ctx, co
     m.remark_of = row->id;
     m.reason = reason;
     m.note.clear();
+    if (job_changed) {
+      // The row says which job marked it; the note keeps the one the part was first marked with.
+      m.job_sha256 = ctx.job_sha256;
+      m.note = "job changed since the part was marked with " + marked_with;
+    }
     a.mark_id = tx->insert_mark(m);
     a.objects = m.objects;
     a.serials = m.serials;

@@ -169,7 +169,10 @@ class SerialStore {
   // A new audit row with the texts and values of `original` (a mark or re-mark of this store),
   // linked to the first mark. Consumes nothing. A part that ended done and was re-marked
   // already is re-marked again only with a `reason`, which the row keeps.
-  Allocation remark(std::int64_t original, const MarkContext& ctx, const std::string& reason = "");
+  // A part marked with another version of the job file is refused unless `allow_changed_job`;
+  // then the new row carries this job's hash and a note naming the one the part was marked with.
+  Allocation remark(std::int64_t original, const MarkContext& ctx, const std::string& reason = "",
+                    bool allow_changed_job = false);
 
   // With a spec, `next` follows its rules at `now`; without, it is the stored next value.
   // Read-only.

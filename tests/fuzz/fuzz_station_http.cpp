@@ -4,11 +4,6 @@
 // HTTP/1.1 status line, or nothing (the server closed a connection it could not parse); every
 // 4xx and 5xx answer's body is a JSON object with a string "error". The event stream is left
 // out (an answer without end: the tests cover it). Anything else, or a sanitizer report, is a bug.
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <sys/time.h>
-#include <unistd.h>
 
 #include <cctype>
 #include <cstdint>
@@ -17,6 +12,7 @@
 #include <string>
 
 #include "fuzz_check.hpp"
+#include "fuzz_loopback.hpp"
 #include "fuzz_station_source.hpp"
 #include "marker/station/http_server.hpp"
 
@@ -57,24 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string request(reinterpret_cast<const char*>(data), size);
   if (asks_for_events(request)) return -1;  // not kept in the corpus
   Served& s = served();
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in sa{};
-  sa.sin_family = AF_INET;
-  sa.sin_port = htons(static_cast<std::uint16_t>(s.http.port()));
-  ::inet_pton(AF_INET, "127.0.0.1", &sa.sin_addr);
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0) broken("cannot connect to the server");
-  timeval tv{5, 0};
-  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
-  for (std::size_t sent = 0; sent < request.size();) {
-    const ssize_t n = ::send(fd, request.data() + sent, request.size() - sent, MSG_NOSIGNAL);
-    if (n <= 0) break;  // the server closed early (a body over the limit): its answer is read below
-    sent += static_cast<std::size_t>(n);
-  }
-  ::shutdown(fd, SHUT_WR);
-  std::string reply;
-  char chunk[4096];
-  for (ssize_t n; (n = ::recv(fd, chunk, sizeof chunk, 0)) > 0;) reply.append(chunk, static_cast<std::size_t>(n));
-  ::close(fd);
+  const std::string reply = mark::fuzz::exchange_on_loopback(s.http.port(), request.data(), request.size());
   s.station.wait_idle();
   s.station.resume();  // a PAUSE does not hold the next input back
   if (reply.empty()) return 0;

@@ -42,9 +42,9 @@ TEST(CliLayout, JsonHasGlyphsWithElementsInMillimetres) {
   }
   EXPECT_TRUE(has_curve) << "the built-in O is drawn with arcs";
   // Cap height 4 mm: the figure is 4 mm tall (O may overshoot slightly).
-  const double h = j["bounds"]["max"][1].get<double>() - j["bounds"]["min"][1].get<double>();
+  const double h = j["bounds_mm"]["y_max"].get<double>() - j["bounds_mm"]["y_min"].get<double>();
   EXPECT_NEAR(h, 4.0, 0.2);
-  EXPECT_NEAR(j["bounds"]["min"][0].get<double>(), -5.0, 1.0);
+  EXPECT_NEAR(j["bounds_mm"]["x_min"].get<double>(), -5.0, 1.0);
 }
 
 // The ellipse's angles are degrees, as their names say: the parametric point at start_deg and
@@ -152,8 +152,8 @@ TEST(CliLayout, PreviewJsonDescribesWhatWasDrawn) {
   // The same figure as `layout --json`: its bounds and its lit length.
   const Result l = run({"layout", "AB\\nC", "--height", "4", "--json"});
   const auto fig = nlohmann::json::parse(l.out);
-  EXPECT_DOUBLE_EQ(j["bounds_mm"]["x_min"].get<double>(), fig["bounds"]["min"][0].get<double>());
-  EXPECT_DOUBLE_EQ(j["bounds_mm"]["y_min"].get<double>(), fig["bounds"]["min"][1].get<double>());
+  EXPECT_DOUBLE_EQ(j["bounds_mm"]["x_min"].get<double>(), fig["bounds_mm"]["x_min"].get<double>());
+  EXPECT_DOUBLE_EQ(j["bounds_mm"]["y_min"].get<double>(), fig["bounds_mm"]["y_min"].get<double>());
 }
 
 }  // namespace

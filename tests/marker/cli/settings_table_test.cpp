@@ -219,6 +219,10 @@ TEST(Settings, EveryKeyAJobFileIsReadByIsDeclared) {
 // text object, as the setting's place says.
 std::string job_with(const std::string& place, const std::string& key, const std::string& value) {
   std::string top = "", head = "", pen = "", object = "", circle = "";
+  // A delays setting is read by a delays pen only (a blanking pen refuses it).
+  std::string corner = "blanking";
+  for (const SettingRef& s : kDelaysPenSettings)
+    if (place == "pens.NAME" && name_of(s).key == key) corner = "delays";
   const std::string item = "\"" + key.substr(key.rfind('.') + 1) + "\": " + value;
   if (key.starts_with("head.")) head = ", " + item;
   else if (key.starts_with("circle.")) circle = ", " + item;
@@ -227,7 +231,7 @@ std::string job_with(const std::string& place, const std::string& key, const std
   else if (place == "objects[]") object = ", " + item;
   else top = ", " + item;
   return R"({"format": "marker-job/1", "head": {"model": "SL10")" + head + "}" + top +
-         R"(, "pens": {"p": {"corner": "blanking")" + pen + R"(}}, "objects": [{"name": "t", "template": "A")" +
+         R"(, "pens": {"p": {"corner": ")" + corner + "\"" + pen + R"(}}, "objects": [{"name": "t", "template": "A")" +
          object + (circle.empty() ? "" : R"(, "circle": {"radius_mm": 20)" + circle + "}") + "}]}";
 }
 

@@ -225,6 +225,36 @@ TEST_F(MarkJobCli, ARemarkLinksTheRowAndTakesNoNumber) {
   EXPECT_NE(r.err.find("--count and --set do not apply"), std::string::npos) << r.err;
 }
 
+// A re-mark after the job file was edited (power 80 → 50): refused, naming the option; with
+// --allow-changed-job marked with the edited job, its row carrying the new job's hash and a note
+// naming the version the part was first marked with. No number is consumed either way.
+TEST_F(MarkJobCli, ARemarkWithAnEditedJobNeedsAllowChangedJobAndIsNoted) {
+  ASSERT_EQ(mark({}).code, 0);
+  const std::string first_hash = log().at(0)["job_sha256"];
+  std::ifstream in(job);
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  const std::size_t at = text.find("\"power_pct\": 80");
+  ASSERT_NE(at, std::string::npos) << text;
+  text.replace(at, 17, "\"power_pct\": 50");
+  std::ofstream(job) << text;
+  auto r = mark({"--remark", "2"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("not with this job file (to re-mark it with this one: --allow-changed-job"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(mark({"--allow-changed-job"}).code, 1) << "only a re-mark reads it";
+  r = mark({"--remark", "2", "--allow-changed-job", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(json_lines(r.out).at(0)["text"], "SN 000041 LOT A00");
+  const auto rows = log();
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[1]["kind"], "remark");
+  EXPECT_EQ(rows[1]["outcome"], "done");
+  EXPECT_NE(rows[1]["job_sha256"], first_hash);
+  EXPECT_EQ(rows[1]["note"], "job changed since the part was marked with " + job + " (SHA-256 " +
+                                 first_hash.substr(0, 12) + "…)");
+  EXPECT_EQ(serial()["next"], 42);
+}
+
 TEST_F(MarkJobCli, OptionsOfTheOtherModeAreRefused) {
   auto r = mark({"--speed", "500"});
   EXPECT_EQ(r.code, 1);

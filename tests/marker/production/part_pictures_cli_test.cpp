@@ -80,8 +80,8 @@ struct PartPicturesCli : testing::Test {
     const nlohmann::json check = nlohmann::json::parse(r.out);
     for (const auto& o : check["objects"]) {
       Box b;
-      b.add(o["bounds_mm"][0], o["bounds_mm"][1]);
-      b.add(o["bounds_mm"][2], o["bounds_mm"][3]);
+      b.add(o["bounds_mm"]["x_min"], o["bounds_mm"]["y_min"]);
+      b.add(o["bounds_mm"]["x_max"], o["bounds_mm"]["y_max"]);
       boxes.push_back(b);
     }
     return boxes;

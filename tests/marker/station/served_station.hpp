@@ -1,7 +1,8 @@
 #pragma once
 // `marker serve` in process for the station's interface suites (StationTcp, StationHttp): a job
 // file on the simulated scanner with a real SQLite serial store (JobSource → PartRunner), the
-// Station, the TcpServer and the HttpServer on free loopback ports, and a line-protocol client.
+// Station, the TcpServer, the HttpServer and the ModbusServer on free loopback ports, and a
+// line-protocol client.
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -20,6 +21,7 @@
 
 #include "marker/cli/serve_source.hpp"
 #include "marker/station/http_server.hpp"
+#include "marker/station/modbus_server.hpp"
 #include "marker/station/tcp_server.hpp"
 #include "marker/store/open_store.hpp"
 #include "tests/marker/store/store_test_support.hpp"
@@ -82,10 +84,12 @@ struct Served {
   std::unique_ptr<Station> station;
   std::unique_ptr<TcpServer> server;
   std::unique_ptr<HttpServer> http;
+  std::unique_ptr<ModbusServer> modbus;
   std::atomic<bool> stop{false};
   std::thread thread;
 
-  explicit Served(bool virtual_time = true, int max_connections = 8) {
+  // `inject`: marker mark's --inject (fault@N: every part fails at sample N).
+  explicit Served(bool virtual_time = true, int max_connections = 8, const std::string& inject = {}) {
     const std::string job = (dir / "line.json").string();
     std::ofstream(job) << kStationJob;
     cli::MarkJobArgs a;
@@ -95,18 +99,23 @@ struct Served {
     a.create_counters = true;
     a.virtual_time = virtual_time;
     a.device = "sim";
+    a.inject = inject;
     source = std::make_unique<cli::JobSource>(a);
     station = std::make_unique<Station>(*source);
     server = std::make_unique<TcpServer>(*station, parse_listen_address("127.0.0.1:0", "--listen"), max_connections);
     http = std::make_unique<HttpServer>(*station, parse_listen_address("127.0.0.1:0", "--http"));
+    modbus = std::make_unique<ModbusServer>(*station, parse_listen_address("127.0.0.1:0", "--modbus"),
+                                            std::vector<AllowedNet>{}, max_connections);
     thread = std::thread([this] { server->serve([this] { return stop.load(); }); });
   }
   int port() const { return server->port(); }
   int http_port() const { return http->port(); }
+  int modbus_port() const { return modbus->port(); }
   // Stops everything and gives the parts' audit rows, read back from the store file.
   std::vector<AuditRow> close() {
     stop = true;
     if (thread.joinable()) thread.join();
+    modbus.reset();
     server.reset();
     http.reset();
     station.reset();

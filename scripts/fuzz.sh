@@ -8,14 +8,15 @@
 # FreeType), job files, data lists (CSV), the built-in font's glyph script, the PGM and PNG readers, code data (GS1,
 # UDI, the zint wrapper), head profiles, the option-value parsers (numbers, "CX,CY,R", "WxH", --stock, --travel), the camera
 # option (--camera KEY=VALUE,…), the station's HTTP requests (station_http: raw bytes to a server on
-# loopback; modbus_request: raw Modbus TCP frames to a server on loopback), and
+# loopback; modbus_request: raw Modbus TCP frames to a server on loopback), the per-part file names
+# of mark --job --preview (part_file), and
 # the LMC driver's readers (lmc_reply: replies and command words; cor_file: EzCad .cor files and
-# captures). All 19 at the default 20 s run for about five minutes, plus the build.
+# captures). All 20 at the default 20 s run for about five minutes, plus the build.
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${MARKER_FUZZ_BUILD:-$root/build-fuzz}
-all_targets=(jhf lff cxf outline_font job data_list glyph_script pgm png option_values camera_option plant_option lmc_reply cor_file code_data head_profile station_line station_http modbus_request)
+all_targets=(jhf lff cxf outline_font job data_list glyph_script pgm png option_values camera_option plant_option lmc_reply cor_file code_data head_profile station_line station_http modbus_request part_file)
 
 seconds=20
 if [[ ${1:-} =~ ^[0-9]+$ ]]; then
@@ -57,6 +58,7 @@ declare -A seeds=(
   [option_values]="$root/tests/fuzz/seeds/option_values/*"
   [camera_option]="$root/tests/fuzz/seeds/camera_option/*"
   [plant_option]="$root/tests/fuzz/seeds/plant_option/*"
+  [part_file]="$root/tests/fuzz/seeds/part_file/*"
   [job]="$root/tests/fuzz/job-seeds/*.json"
   [data_list]="$root/tests/fuzz/seeds/data_list/*"
   [code_data]="$root/tests/fuzz/code_data-seeds/*"

@@ -55,6 +55,16 @@ void DoseRaster::deposit_segment(Vec2 a, Vec2 b, double dose) {
   for (int i = 0; i < n; ++i) deposit(a + ((i + 0.5) / n) * (b - a), share);
 }
 
+void DoseRaster::add(const DoseRaster& other) {
+  if (other.pixel_mm_ != pixel_mm_) throw std::invalid_argument("dose rasters of different pixel sizes cannot be added");
+  for (const auto& [k, tile] : other.tiles_) {
+    auto& slot = tiles_[k];
+    if (!slot) slot = std::make_unique<Tile>();
+    for (std::size_t i = 0; i < slot->dose.size(); ++i) slot->dose[i] += tile->dose[i];
+  }
+  total_ += other.total_;
+}
+
 void DoseRaster::reserve_along(const std::vector<Vec2>& polyline, double margin_mm) {
   const double tile_mm = tile_size * pixel_mm_;
   // Points along the polyline are at most half a tile apart; a square of half-width

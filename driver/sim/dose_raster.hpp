@@ -20,6 +20,9 @@ class DoseRaster {
   // Deposit `dose` spread evenly along the segment a→b (points ≤ half a pixel apart), so a fast
   // move leaves a continuous trace rather than dots.
   void deposit_segment(Vec2 a, Vec2 b, double dose);
+  // Adds every pixel of `other` (same pixel size, else std::invalid_argument): the dose of a
+  // production part whose objects the scanner marked as separate jobs, each clearing its own.
+  void add(const DoseRaster& other);
 
   // Allocate every tile within margin_mm of the polyline now, so later deposits there do not
   // allocate (the simulator sizes its raster before the first sample of a job).

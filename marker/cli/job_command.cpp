@@ -1,6 +1,8 @@
-// `marker job check FILE [--set NAME=VALUE ...] [--json]`: validates a job file and prints what
-// its next part would look like (every object laid out and planned, nothing marked, no store
-// opened, nothing written).
+// `marker job check FILE [--set NAME=VALUE ...] [--json] [--preview OUT.png|svg [--store S]]`:
+// validates a job file and prints what its next part would look like (every object laid out and
+// planned, nothing marked, nothing written but the preview). Without --preview no store is
+// opened: the part is a fresh store's first. With it, the part is the station's store's next
+// (read-only, nothing consumed) and its picture is written (part_preview.hpp).
 // `marker job new -o FILE --text TEMPLATE [layout, pen and counter options]`: writes a job file
 // from command-line options, so nobody has to write JSON by hand to start.
 #include <cmath>
@@ -13,6 +15,7 @@
 #include "marker/cli/layout_options.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
+#include "marker/cli/part_preview.hpp"
 #include "marker/cli/pen_options.hpp"
 #include "marker/cli/production_options.hpp"
 #include "marker/job/auto_speed.hpp"
@@ -37,7 +40,21 @@ struct CheckArgs {
   std::string file;
   std::vector<std::string> sets;
   bool json = false;
+  std::string preview;  // the next part's picture
+  StoreArgs store;      // where its values come from (--preview)
 };
+
+// The next part's counter values for --preview: the store's, read-only; a store that does not
+// exist yet gives the counters' starts (nullopt).
+std::optional<std::map<std::string, std::int64_t>> store_next_serials(const CheckArgs& a, const JobFile& job) {
+  const std::string where = store_location(a.store.store);
+  if (where.find("://") == std::string::npos && !std::filesystem::exists(where)) {
+    std::cerr << "marker: no store at " << where << " yet: the preview is a fresh store's first part\n";
+    return std::nullopt;
+  }
+  auto store = open_production_store(a.store, StoreAccess::read_only);
+  return next_serials(job, *store, SystemClock().now());
+}
 
 struct NewArgs {
   std::string output;
@@ -65,18 +82,22 @@ struct NewArgs {
 };
 
 int run_check(const CheckArgs& a) {
+  if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
+  if (!a.store.store.empty() && a.preview.empty())
+    throw InputError("--store applies to --preview (the next part's values): give --preview FILE");
   const JobFile job = read_job_file(a.file);
   const auto variables = job_variables(job, parse_sets(a.sets));
   std::vector<std::string> warnings;
   const JobFonts fonts(job, &warnings);
   for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
   for (const std::string& w : text_repeat_warnings(job)) std::cerr << "marker: warning: " << w << "\n";
-  // The first part of a fresh store (the store, if any, is not read: checking a job touches
-  // nothing but the job, its fonts and its data list).
+  // The first part of a fresh store (the store, if any, is not read without --preview: checking a
+  // job touches nothing but the job, its fonts and its data list); with --preview the store's next.
   std::map<std::string, std::int64_t> serials;
   const std::optional<DataList> data = job.data ? std::optional(load_data_list(job)) : std::nullopt;
-  const std::vector<ObjectText> texts =
-      first_part_texts(job, variables, SystemClock().now(), &serials, data ? &*data : nullptr);
+  const auto next = a.preview.empty() ? std::nullopt : store_next_serials(a, job);
+  const std::vector<ObjectText> texts = first_part_texts(job, variables, SystemClock().now(), &serials,
+                                                         data ? &*data : nullptr, next ? &*next : nullptr);
 
   nlohmann::json out = {{"job", job.job_name}, {"file", a.file}, {"head", job.head.name},
                         {"field_mm", job.head.field_mm}, {"spot_diameter_um", job.head.spot_diameter_um},
@@ -121,6 +142,11 @@ int run_check(const CheckArgs& a) {
                               {"pulse_spacing_um", spacing_um}, {"pulse_overlap_fraction", overlap}});
   }
   out["planned_time_s"] = total_s;
+  if (!a.preview.empty()) {
+    // Written whole after every check passed: a refused job leaves no picture.
+    write_file_whole(a.preview, next_part_preview(job, fonts, texts, a.preview));
+    out["preview_file"] = a.preview;
+  }
   if (a.json) {
     std::cout << out.dump() << "\n";
     return 0;
@@ -144,6 +170,7 @@ int run_check(const CheckArgs& a) {
   for (const auto& [name, value] : serials) std::printf("  counter %s starts at %lld\n", name.c_str(), static_cast<long long>(value));
   for (const std::string& v : job.required_variables())
     std::printf("  variable %s has no default: mark with --set %s=VALUE\n", v.c_str(), v.c_str());
+  if (!a.preview.empty()) std::printf("wrote %s\n", a.preview.c_str());
   std::printf("ok\n");
   return 0;
 }
@@ -290,6 +317,9 @@ Command make_job_command() {
         c->add_option("file", check->file, "job file (.json)")->required();
         add_setting(*c, kSet, check->sets);
         c->add_flag("--json", check->json, "print one JSON object");
+        c->add_option("--preview", check->preview,
+                      "write the next part's picture (.png or .svg): the store's next values, nothing consumed");
+        add_store_options(*c, check->store, false);
         auto* n = job->add_subcommand("new", "write a job file from command-line options");
         NewArgs& a = *created;
         n->add_option("-o,--output", a.output, "job file to write")->required();

@@ -60,6 +60,7 @@
 #include "marker/limits/production_settings.hpp"
 #include "marker/output/output_file.hpp"
 #include "marker/preview/mark_preview.hpp"
+#include "marker/preview/sim_outputs.hpp"
 
 namespace mark::cli {
 namespace {
@@ -231,19 +232,6 @@ std::function<void(std::uint64_t, std::uint64_t)> progress_printer() {
   };
 }
 
-// One CSV row per sample, written whole (marker/output/output_file.hpp).
-void write_trace(const std::vector<SimTraceRow>& rows, const std::string& path) {
-  std::string csv = "t_s,cmd_x_mm,cmd_y_mm,laser,beam_x_mm,beam_y_mm\n";
-  csv.reserve(csv.size() + rows.size() * 56);
-  char line[160];
-  for (const SimTraceRow& r : rows) {
-    const int n = std::snprintf(line, sizeof line, "%.6f,%.5f,%.5f,%d,%.5f,%.5f\n", r.t_s, r.cmd_x_mm,
-                                r.cmd_y_mm, r.laser ? 1 : 0, r.beam_x_mm, r.beam_y_mm);
-    csv.append(line, static_cast<std::size_t>(n));
-  }
-  write_file_whole(path, csv);
-}
-
 // --require-quality and --require-grade: the simulator predicts the mark of `job` (planned for a
 // sample-level device; virtual time, no device touched) and judges it as a production part is
 // judged (mark_requirement.hpp); short of it, the job is refused before anything fires.
@@ -338,13 +326,10 @@ int run_mark(const MarkArgs& a) {
       // The part itself; a job with an inverted code is on a dark part.
       bool dark_part = false;
       for (const CodeObject& c : spec.codes) dark_part = dark_part || c.layout.invert;
-      FieldWindow window;
-      if (!dosed_window(scanner->dose(), 0.2, window)) window = {-1, -1, 1, 1};
-      const PartLook& look = spec.verify.camera.look;
-      picture = part_picture(scanner->dose(), window, spec.verify.response, dark_part ? dark_part_look(look) : look);
+      picture = dose_part_picture(scanner->dose(), spec.verify.response, spec.verify.camera.look, dark_part);
       write_file_whole(a.dose_png, encode_grey_png(*picture));
     }
-    if (!a.trace.empty()) write_trace(scanner->trace(), a.trace);
+    if (!a.trace.empty()) write_trace_csv(scanner->trace(), a.trace);
   }
   if (a.json) {
     nlohmann::json j = to_json(a, spec, options, r, device->describe().name);
@@ -406,15 +391,22 @@ int run_mark_mode(const MarkArgs& a, const MarkModes& modes) {
     refuse_unread_mark_options(*modes.sub, a);
     return run_mark(a);
   }
-  for (const CLI::Option* o : modes.sub->get_options())
-    if (o->count() > 0 && !in(modes.production, o) && !in(modes.shared, o))
-      throw InputError((o->nonpositional() ? o->get_name() : std::string("a text to mark")) +
+  for (const CLI::Option* o : modes.sub->get_options()) {
+    if (o->count() == 0 || in(modes.production, o) || in(modes.shared, o)) continue;
+    if (o->get_name() == kRequireQuality.name.flag || o->get_name() == kRequireGrade.name.flag)
+      throw InputError(o->get_name() + " does not apply with --job: use the object's \"require\" in the job file "
+                       "(docs/job-file.md)");
+    throw InputError((o->nonpositional() ? o->get_name() : std::string("a text to mark")) +
                        " does not apply with --job: the job file sets it (see marker job check)");
+  }
   MarkJobArgs job = a.production;
   job.device = modes.sub->count("--device") ? a.device : "";
   job.inject = a.inject;
   job.virtual_time = a.virtual_time;
   job.json = a.json;
+  job.preview = a.preview;
+  job.dose_png = a.dose_png;
+  job.trace = a.trace;
   return run_mark_job(job);
 }
 
@@ -439,12 +431,16 @@ Command make_mark_command() {
         add_setting(*sub, kOrder, a->order);
         add_setting(*sub, kMarkSpeed, a->speed, kAutoSpeed, kAutoSpeedHelp);
         add_pen_options(*sub, a->pen, false);
-        sub->add_option("--preview", a->preview,
-                        "write the marked result: dose under the planned path (.png or .svg)");
-        sub->add_option("--dose-png", a->dose_png,
-                        "write the part itself at the dose raster's pixel (PNG, pixel size in pHYs and as dose_px_um)");
-        sub->add_option("--trace", a->trace,
-                        "write one CSV row per sample: t_s,cmd_x_mm,cmd_y_mm,laser,beam_x_mm,beam_y_mm");
+        // With --job: each part's files, named with {mark_id} / {serial} / {COUNTER}.
+        modes->shared.push_back(sub->add_option(
+            "--preview", a->preview,
+            "write the marked result: dose under the planned path (.png or .svg; --job: each part's, "
+            "name with {mark_id} or {serial})"));
+        modes->shared.push_back(sub->add_option(
+            "--dose-png", a->dose_png,
+            "write the part itself at the dose raster's pixel (PNG, pixel size in pHYs and as dose_px_um)"));
+        modes->shared.push_back(sub->add_option(
+            "--trace", a->trace, "write one CSV row per sample: t_s,cmd_x_mm,cmd_y_mm,laser,beam_x_mm,beam_y_mm"));
         modes->shared.push_back(sub->add_option(
             "--inject", a->inject,
             "fault injection: underrun@N, abort@N or fault@N (N: sample index; with --job in every "

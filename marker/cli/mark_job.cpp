@@ -9,8 +9,15 @@
 #include "marker/cli/device_factory.hpp"
 #include "marker/cli/inject_option.hpp"
 #include "marker/cli/interrupt.hpp"
+#include "marker/cli/output_options.hpp"
 #include "marker/cli/production_options.hpp"
 #include "marker/limits/production_settings.hpp"
+#include "marker/output/output_file.hpp"
+#include "marker/preview/mark_preview.hpp"
+#include "marker/preview/sim_outputs.hpp"
+#include "driver/sim/grey_png.hpp"
+#include "marker/production/part_files.hpp"
+#include "marker/production/part_picture.hpp"
 #include "marker/production/part_json.hpp"
 #include "marker/production/part_run.hpp"
 #include "marker/store/open_store.hpp"
@@ -27,7 +34,7 @@ std::string serials_text(const std::map<std::string, std::int64_t>& serials) {
   return s;
 }
 
-void print_part(const PartResult& p, long long index, long long count) {
+void print_part(const PartResult& p, long long index, long long count, const std::string& files) {
   std::string text = p.text();
   for (char& c : text)
     if (c == '\n') c = '|';
@@ -43,7 +50,7 @@ void print_part(const PartResult& p, long long index, long long count) {
   if (p.pulses)
     std::printf(", pulses %.1f µm apart (overlap %.0f %%)", p.pulses->spacing_max_um,
                 100 * p.pulses->overlap());
-  std::printf("\n");
+  std::printf("%s\n", files.c_str());
   std::fflush(stdout);
 }
 
@@ -114,6 +121,72 @@ void print_record(const PartResult& p, long long index) {
                  p.record_error.c_str());
 }
 
+// The run's --preview / --dose-png / --trace: checked before anything is marked, written per part.
+struct PartOutputs {
+  std::vector<std::pair<PartFile, std::string>> files;  // with the JSON key naming the written file
+  PartLookSpec look;
+  bool any() const { return !files.empty(); }
+  bool traced() const {
+    for (const auto& f : files)
+      if (f.first.option == "--trace") return true;
+    return false;
+  }
+};
+
+PartOutputs part_outputs(const MarkJobArgs& a, const JobFile& job, const JobFonts& fonts) {
+  PartOutputs out;
+  check_standard_output({{"--preview", &a.preview}, {"--dose-png", &a.dose_png}, {"--trace", &a.trace}}, a.json);
+  const auto take = [&](const char* option, const std::string& pattern, const char* key,
+                        std::initializer_list<std::string_view> extensions) {
+    if (pattern.empty()) return;
+    PartFile f{option, pattern};
+    check_part_file(f, job, a.count);
+    // The first part's name stands for every part's: the same folder and extension.
+    std::map<std::string, std::int64_t> starts;
+    for (const auto& [name, spec] : job.used_counters()) starts[name] = spec.start;
+    check_output_path(option, part_file_name(f, job, 1, starts), extensions);
+    out.files.emplace_back(std::move(f), key);
+  };
+  take("--preview", a.preview, "preview_file", {".svg", ".png"});
+  take("--dose-png", a.dose_png, "dose_png_file", {".png"});
+  take("--trace", a.trace, "trace_file", {});
+  if (out.any()) out.look = part_look(job, fonts);
+  return out;
+}
+
+// The part's files, after its outcome is recorded. Returns what the part's line adds ("; wrote …"
+// or why a file was not written) and sets `failed` when one could not be.
+std::string write_part_outputs(const PartOutputs& out, const PartPicture& picture, const JobFile& job,
+                               const PartResult& p, nlohmann::json* line, bool& failed) {
+  std::string said;
+  for (const auto& [file, key] : out.files) {
+    const std::string path = part_file_name(file, job, p.mark_id, p.serials);
+    try {
+      if (file.option == "--preview") {
+        write_mark_preview(picture.plan(), picture.dose(), path);
+      } else if (file.option == "--dose-png") {
+        const GreyImage image = dose_part_picture(picture.dose(), out.look.response, out.look.look, out.look.dark_part);
+        write_file_whole(path, encode_grey_png(image));
+        if (line) {
+          // Where the picture lies on the field, so a script can lay the objects' boxes on it.
+          (*line)["dose_px_um"] = 1e6 / pixels_per_metre(image.pixel_mm);
+          (*line)["dose_x0_mm"] = image.x0_mm;
+          (*line)["dose_top_mm"] = image.top_mm;
+        }
+      } else {
+        write_trace_csv(picture.trace(), path);
+      }
+      said += "; wrote " + path;
+      if (line) (*line)[key] = path;
+    } catch (const std::exception& e) {
+      failed = true;
+      said += "; " + file.option + " NOT written: " + e.what();
+      if (line) (*line)["file_errors"].push_back(file.option + ": " + e.what());
+    }
+  }
+  return said;
+}
+
 }  // namespace
 
 int run_mark_job(const MarkJobArgs& a) {
@@ -137,6 +210,7 @@ int run_mark_job(const MarkJobArgs& a) {
   const JobFonts fonts(job, &warnings);
   for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
   const InjectArg inject = a.inject.empty() ? InjectArg{} : parse_inject(a.inject);
+  const PartOutputs outputs = part_outputs(a, job, fonts);
 
   // The store before the device: a store that refuses (damaged, a counter it does not know)
   // is reported before anything is switched on.
@@ -153,9 +227,13 @@ int run_mark_job(const MarkJobArgs& a) {
   SimSettings sim;
   sim.fault_at = inject.device_fault_at;
   sim.virtual_time = a.virtual_time;
+  sim.trace = outputs.traced();
   const OpenedDevice opened = open_device(
       a.device.empty() ? job.device : a.device, object_spec(job, job.objects.front(), "", fonts), sim);
   Device& device = *opened.device;
+  if (outputs.any() && !opened.simulator)
+    throw InputError("--preview, --dose-png and --trace need a simulated scanner (--device sim or lmc-emulated); "
+                     "nothing was marked");
   PartRunner runner(job, fonts, variables, device, *store, context);
 
   PartOptions options;
@@ -165,6 +243,13 @@ int run_mark_job(const MarkJobArgs& a) {
   options.job.inject = inject.drain;
   options.remark_reason = a.reason;
   options.allow_changed_job = a.allow_changed_job;
+  // Every object's dose and trace, read off the scanner before the next object clears them.
+  std::optional<PartPicture> picture;
+  if (outputs.any())
+    options.object_marked = [&](std::size_t, const JobResult& marked) {
+      const SimScanner& scanner = opened.simulator->scanner();
+      picture->add(marked.job.plan, scanner.dose(), scanner.trace());
+    };
   bool warned_dots = false, warned_poor = false;
   for (long long i = 1; i <= a.count; ++i) {
     if (interrupt_flag().requested()) {
@@ -172,15 +257,24 @@ int run_mark_job(const MarkJobArgs& a) {
                    i - 1, a.count);
       return kExitInterrupted;
     }
+    if (outputs.any()) picture.emplace(opened.simulator->scanner().dose().pixel_mm());
     const PartResult p = a.remark ? runner.remark(*a.remark, SystemClock().now(), options)
                                   : runner.mark_next(SystemClock().now(), options);
+    nlohmann::json line;
     if (a.json) {
-      nlohmann::json line = part_line(p);
+      line = part_line(p);
       line["part"] = i;
-      std::cout << line.dump() << std::endl;  // flushed: a reader follows the run part by part
-    } else {
-      print_part(p, i, a.count);
     }
+    // The files after the outcome is recorded (mark_next has): a picture never delays a serial's
+    // commit. A part stopped by Ctrl-C leaves none (as `mark`); a failed one shows how far it got.
+    bool files_failed = false;
+    std::string files;
+    if (outputs.any() && picture->objects() > 0 && !interrupt_flag().requested())
+      files = write_part_outputs(outputs, *picture, job, p, a.json ? &line : nullptr, files_failed);
+    if (a.json)
+      std::cout << line.dump() << std::endl;  // flushed: a reader follows the run part by part
+    else
+      print_part(p, i, a.count, files);
     print_record(p, i);
     if (!p.note.empty()) std::fprintf(stderr, "marker: warning: part %lld: %s\n", i, p.note.c_str());
     if (!p.good()) {
@@ -189,6 +283,12 @@ int run_mark_job(const MarkJobArgs& a) {
       return p.rejected ? kExitRejected : p.outcome == JobOutcome::aborted ? kExitInterrupted : 1;
     }
     if (!p.recorded.stored && !p.recorded.journaled) return 1;  // not even the journal took it
+    if (files_failed) {
+      std::fprintf(stderr, "marker: part %lld (id %lld) is %s as recorded; a file of it was not written: "
+                           "no further part started\n",
+                   i, static_cast<long long>(p.mark_id), std::string(p.outcome_name()).c_str());
+      return 1;
+    }
     if (p.pulses && p.pulses->separate_dots() && !warned_dots) {
       warned_dots = true;
       std::fprintf(stderr,

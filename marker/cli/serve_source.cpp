@@ -4,6 +4,7 @@
 
 #include "base/error.hpp"
 #include "marker/cli/inject_option.hpp"
+#include "marker/cli/part_preview.hpp"
 #include "marker/store/store_location.hpp"
 
 namespace mark::cli {
@@ -85,14 +86,13 @@ void JobSource::set_variable(const std::string& name, const std::string& value) 
 
 std::vector<ObjectText> JobSource::preview(std::map<std::string, std::int64_t>* serials) {
   const SysTime now = SystemClock().now();
-  std::map<std::string, std::int64_t> values;
-  for (const auto& [name, spec] : loaded_->job.used_counters()) {
-    const CounterStatus st = store_->status(name, &spec, loaded_->job.shifts, now);
-    if (!st.next) throw InputError("counter " + name + " has stopped (its limit was reached): no next part");
-    values[name] = *st.next;
-  }
+  const std::map<std::string, std::int64_t> values = next_serials(loaded_->job, *store_, now);
   if (serials) *serials = values;
   return render_objects(loaded_->job, loaded_->runner->variables(), now, values);
+}
+
+std::string JobSource::preview_png() {
+  return next_part_preview(loaded_->job, *loaded_->fonts, preview(nullptr), "preview.png");
 }
 
 std::optional<std::int64_t> JobSource::next_serial(const std::string& counter) {

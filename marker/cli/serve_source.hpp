@@ -25,6 +25,8 @@ class JobSource : public PartSource {
   void reset_device() override;
   void set_variable(const std::string& name, const std::string& value) override;
   std::vector<ObjectText> preview(std::map<std::string, std::int64_t>* serials) override;
+  // The next part's picture, as `marker job check --preview` draws it (part_preview.hpp).
+  std::string preview_png() override;
   std::optional<std::int64_t> next_serial(const std::string& counter) override;
   void load(const std::string& job) override;
   std::string job() const override { return args_.job; }

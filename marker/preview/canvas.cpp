@@ -87,7 +87,9 @@ void Canvas::set_dash_px(double on_px, double off_px) {
   cairo_set_dash(cr_, d, 2, 0);
 }
 
-void Canvas::finish() {
+void Canvas::finish() { write_file_whole(path_, encoded()); }
+
+std::string Canvas::encoded() {
   draw_legend(cr_, panels_, legend_, height_px_, width_px_);
   cairo_surface_flush(surface_);
   cairo_status_t status = CAIRO_STATUS_SUCCESS;
@@ -99,7 +101,7 @@ void Canvas::finish() {
   }
   if (status != CAIRO_STATUS_SUCCESS)
     throw InputError("preview file '" + path_ + "': " + cairo_status_to_string(status));
-  write_file_whole(path_, bytes_);
+  return std::move(bytes_);
 }
 
 }  // namespace mark

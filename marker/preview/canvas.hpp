@@ -31,6 +31,8 @@ class Canvas {
   void set_dash_px(double on_px, double off_px);
   // Writes the file whole (marker/output/output_file.hpp); throws InputError naming it on failure.
   void finish();
+  // The encoded picture instead of the file (an HTTP answer); `path` named only its format.
+  std::string encoded();
 
  private:
   std::string path_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "marker/preview/cairo_path.hpp"
@@ -91,15 +92,15 @@ void stroke_role(Canvas& canvas, const Plan& plan, CommandRole role, const Rgb& 
   canvas.set_dash_px(0, 0);
 }
 
-}  // namespace
-
-void write_mark_preview(const Plan& plan, const DoseRaster& dose, const std::string& path) {
+// The picture drawn on a canvas for `path` (its extension picks SVG or PNG), not yet encoded.
+std::unique_ptr<Canvas> draw_mark_preview(const Plan& plan, const DoseRaster& dose, const std::string& path) {
   const Box bounds = plan.bounds();
   const Box view = grown(bounds, std::max(0.05, 0.03 * std::max(bounds.width(), bounds.height())));
   // At most one image pixel per raster pixel, and no larger than the size limits.
   const double scale = std::min({1.0 / dose.pixel_mm(), kMaxWidthPx / view.width(),
                                  kMaxHeightPx / view.height()});
-  Canvas canvas(path, view, scale, legend(plan));
+  auto drawn = std::make_unique<Canvas>(path, view, scale, legend(plan));
+  Canvas& canvas = *drawn;
   const int w = static_cast<int>(std::ceil(view.width() * scale));
   const int h = static_cast<int>(std::ceil(view.height() * scale));
   paint_dose(canvas, view, dose, w, h);
@@ -115,7 +116,17 @@ void write_mark_preview(const Plan& plan, const DoseRaster& dose, const std::str
     }
   cairo_set_source_rgba(cr, kDwell.r, kDwell.g, kDwell.b, 0.7);
   cairo_fill(cr);
-  canvas.finish();
+  return drawn;
+}
+
+}  // namespace
+
+void write_mark_preview(const Plan& plan, const DoseRaster& dose, const std::string& path) {
+  draw_mark_preview(plan, dose, path)->finish();
+}
+
+std::string encode_mark_preview(const Plan& plan, const DoseRaster& dose, const std::string& format) {
+  return draw_mark_preview(plan, dose, format)->encoded();
 }
 
 }  // namespace mark

@@ -12,5 +12,8 @@ namespace mark {
 
 // Throws InputError naming the file if it cannot be written.
 void write_mark_preview(const Plan& plan, const DoseRaster& dose, const std::string& path);
+// The same picture encoded, for an answer rather than a file: `format` is a name ending in .png
+// or .svg ("preview.png").
+std::string encode_mark_preview(const Plan& plan, const DoseRaster& dose, const std::string& format);
 
 }  // namespace mark

@@ -181,6 +181,7 @@ PartResult PartRunner::run(PartResult part, std::vector<CompiledJob> compiled,
       const JobSpec& spec = specs.emplace_back(marked_spec(i, o.text));
       o.result = run_compiled_job(spec, std::move(compiled[i]), options.job, device_);
       o.started = true;
+      if (options.object_marked) options.object_marked(i, o.result);
       if (o.result.outcome != JobOutcome::done) {
         part.outcome = o.result.outcome;
         part.stopped_object = i;

@@ -84,6 +84,10 @@ struct PartOptions {
   std::function<void(PartPhase, const std::map<std::string, std::int64_t>& serials)> phase;
   std::string remark_reason;  // a re-mark's reason, kept in its audit row
   bool allow_changed_job = false;  // a re-mark with a job file changed since (noted in its row)
+  // Told after each object's device job with what it marked (its plan), before the next object
+  // starts: where the simulated scanner's dose and trace of that object are read, since the
+  // next job clears them (marker/production/part_picture.hpp).
+  std::function<void(std::size_t object, const JobResult& marked)> object_marked;
 };
 
 class PartRunner {

@@ -57,9 +57,12 @@ std::vector<ObjectText> render_objects(const JobFile& job,
 std::vector<ObjectText> first_part_texts(const JobFile& job,
                                          const std::map<std::string, std::string>& variables,
                                          SysTime now, std::map<std::string, std::int64_t>* serials,
-                                         const DataList* data) {
+                                         const DataList* data,
+                                         const std::map<std::string, std::int64_t>* values) {
   std::map<std::string, std::int64_t> starts;
   for (const auto& [name, spec] : job.used_counters()) starts[name] = spec.start;
+  if (values)
+    for (const auto& [name, value] : *values) starts[name] = value;
   auto vars = variables;
   for (const std::string& v : job.required_variables())
     if (!vars.count(v)) vars[v] = "<" + v + ">";
@@ -71,6 +74,20 @@ std::vector<ObjectText> first_part_texts(const JobFile& job,
   std::vector<ObjectText> texts = render_objects(job, vars, now, starts, &columns);
   if (serials) *serials = std::move(starts);
   return texts;
+}
+
+std::map<std::string, std::int64_t> next_serials(const JobFile& job, SerialStore& store, SysTime now) {
+  std::map<std::string, std::int64_t> values;
+  for (const auto& [name, spec] : job.used_counters()) {
+    const CounterStatus st = store.status(name, &spec, job.shifts, now);
+    if (!st.known) {
+      values[name] = spec.start;
+      continue;
+    }
+    if (!st.next) throw InputError("counter " + name + " has stopped (its limit was reached): no next part");
+    values[name] = *st.next;
+  }
+  return values;
 }
 
 DataList load_data_list(const JobFile& job) {

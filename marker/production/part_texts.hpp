@@ -10,6 +10,7 @@
 #include "marker/job/job.hpp"
 #include "marker/production/job_file.hpp"
 #include "marker/store/audit_row.hpp"
+#include "marker/store/serial_store.hpp"
 #include "marker/vars/data_list.hpp"
 
 namespace mark {
@@ -33,12 +34,19 @@ DataList load_data_list(const JobFile& job);
 
 // The texts of a first part on a fresh store (`job check`, `job new --speed auto`): every
 // counter at its start (given back in `serials`), variables without a value shown as <name>,
-// the data list's first row (or <column> without one).
+// the data list's first row (or <column> without one). With `values`, the counters take those
+// instead (`job check --preview`: the store's next part, next_serials).
 std::vector<ObjectText> first_part_texts(const JobFile& job,
                                          const std::map<std::string, std::string>& variables,
                                          SysTime now,
                                          std::map<std::string, std::int64_t>* serials = nullptr,
-                                         const DataList* data = nullptr);
+                                         const DataList* data = nullptr,
+                                         const std::map<std::string, std::int64_t>* values = nullptr);
+
+// The values the store gives the next part from each counter the job uses, by its rules at
+// `now` (nothing consumed; a counter the store does not know yet: its start). Throws InputError
+// for a counter that has stopped at its limit.
+std::map<std::string, std::int64_t> next_serials(const JobFile& job, SerialStore& store, SysTime now);
 
 class JobFonts {
  public:

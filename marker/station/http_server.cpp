@@ -38,7 +38,7 @@ void bad_request(httplib::Response& res, std::string message) {
 
 constexpr const char* kEndpoints =
     "GET /api/status, POST /api/mark[?async=1], POST /api/abort, POST /api/pause, POST /api/resume, "
-    "POST /api/reset, PUT /api/vars/NAME, GET /api/serial/NAME, GET /api/preview, GET /api/log?limit=N, "
+    "POST /api/reset, PUT /api/vars/NAME, GET /api/serial/NAME, GET /api/preview, GET /api/preview.png, GET /api/log?limit=N, "
     "GET /api/events, GET /";
 
 // A body a verb without arguments accepts: nothing, or an empty JSON object.
@@ -123,6 +123,14 @@ void HttpServer::Impl::routes() {
     std::map<std::string, std::int64_t> serials;
     if (auto e = st.preview(texts, serials)) return refuse(res, *e);
     reply(res, 200, preview_json(texts, serials));
+  });
+  // The next part's picture, drawn by the source (nothing consumed): no rendering here.
+  server.Get("/api/preview.png", [&st](const httplib::Request&, httplib::Response& res) {
+    std::string png;
+    if (auto e = st.preview_png(png)) return refuse(res, *e);
+    res.status = 200;
+    res.set_header("Cache-Control", "no-store");  // a new part, a new picture
+    res.set_content(std::move(png), "image/png");
   });
   server.Get("/api/log", [&st](const httplib::Request& req, httplib::Response& res) {
     AuditFilter f;

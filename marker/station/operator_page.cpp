@@ -3,7 +3,9 @@
 namespace mark {
 
 // It listens to /api/events (no polling) and re-reads /api/status and /api/preview when an
-// event arrives; the buttons POST to the same endpoints an MES uses.
+// event arrives; the buttons POST to the same endpoints an MES uses. The next part's picture
+// (/api/preview.png) is fetched again whenever the next part's job or text changes (a part
+// ended, a SET, another job loaded).
 std::string_view operator_page_html() {
   static constexpr std::string_view kPage = R"html(<!doctype html>
 <html lang="en"><head><meta charset="utf-8"><title>marker station</title>
@@ -16,12 +18,14 @@ pre{background:#f4f4f4;padding:.5em;font-size:1.3em;white-space:pre-wrap}
 button{font-size:1.3em;margin-right:.5em;padding:.3em 1em}
 table{border-collapse:collapse}td,th{padding:.1em .8em .1em 0;text-align:left}
 #message{color:#a00}
+#picture{max-width:100%;border:1px solid #ccc}
 </style></head><body>
 <h1>marker station</h1>
 <div>State: <span id="state">…</span> &nbsp; job <code id="job"></code></div>
 <p><button id="mark">Mark</button><button id="abort">Abort</button><button id="pause">Pause</button><button id="reset">Reset</button></p>
 <p id="message"></p>
 <h2>Next mark</h2><pre id="next">…</pre>
+<img id="picture" alt="the next part as the simulated scanner marks it">
 <h2>Last part</h2>
 <table><tr><td>id</td><td id="last_id">–</td></tr>
 <tr><td>outcome</td><td id="last_outcome">–</td></tr>
@@ -48,6 +52,7 @@ function showPart(p) {
   $("last_time").textContent = p.mark_time_s !== undefined ? p.mark_time_s.toFixed(3) + " s" : "–";
   $("last_text").textContent = p.text;
 }
+let shownPicture = null;  // the job and text the picture shows
 async function refresh() {
   const s = await api("GET", "/api/status");
   if (s.ok) {
@@ -62,6 +67,11 @@ async function refresh() {
   if (s.ok && s.body.state !== "marking") {
     const n = await api("GET", "/api/preview");
     $("next").textContent = n.ok ? n.body.text : "(" + n.body.error + ")";
+    const drawn = s.body.job + "\n" + (n.ok ? n.body.text : "");
+    if (n.ok && drawn !== shownPicture) {
+      shownPicture = drawn;
+      $("picture").src = "/api/preview.png?t=" + Date.now();  // a new URL: never a cached picture
+    }
     const l = await api("GET", "/api/log?limit=50");
     if (l.ok) showLog(l.body);
   }

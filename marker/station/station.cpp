@@ -50,6 +50,8 @@ void PartSource::read_log(const AuditFilter&, const std::function<bool(const Aud
   throw InputError("this station keeps no audit log");
 }
 
+std::string PartSource::preview_png() { throw InputError("this station draws no picture of its parts"); }
+
 void Station::read_log(const AuditFilter& filter, const std::function<bool(const AuditRow&)>& row) {
   source_.read_log(filter, row);
 }
@@ -198,6 +200,17 @@ std::optional<StationError> Station::preview(std::vector<ObjectText>& texts,
   if (auto e = refuse_unless_still()) return e;
   try {
     texts = source_.preview(&serials);
+  } catch (const std::exception& e) {
+    return StationError{"refused", e.what()};
+  }
+  return std::nullopt;
+}
+
+std::optional<StationError> Station::preview_png(std::string& png) {
+  std::lock_guard lock(mutex_);
+  if (auto e = refuse_unless_still()) return e;
+  try {
+    png = source_.preview_png();
   } catch (const std::exception& e) {
     return StationError{"refused", e.what()};
   }

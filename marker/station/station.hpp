@@ -45,6 +45,8 @@ class PartSource {
   virtual void set_variable(const std::string& name, const std::string& value) = 0;
   // The next part's texts and serial values; nothing consumed.
   virtual std::vector<ObjectText> preview(std::map<std::string, std::int64_t>* serials) = 0;
+  // The next part's picture (PNG), nothing consumed; a source without one throws InputError.
+  virtual std::string preview_png();
   // The value the next part gets from `counter`; nothing when it has stopped. Throws
   // InputError for a counter the job does not use.
   virtual std::optional<std::int64_t> next_serial(const std::string& counter) = 0;
@@ -109,6 +111,8 @@ class Station {
   std::optional<StationError> preview(std::vector<ObjectText>& texts,
                                       std::map<std::string, std::int64_t>& serials);
   std::optional<StationError> next_serial(const std::string& counter, std::optional<std::int64_t>& next);
+  // The next part's picture (PNG; PartSource::preview_png), or why not.
+  std::optional<StationError> preview_png(std::string& png);
 
   // The store's audit log (PartSource::read_log), at any time: never waits for a part.
   void read_log(const AuditFilter& filter, const std::function<bool(const AuditRow&)>& row);

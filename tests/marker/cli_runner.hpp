@@ -28,6 +28,13 @@ inline CliResult run_cli(std::vector<std::string> args) {
   return {code, testing::internal::GetCapturedStdout(), testing::internal::GetCapturedStderr()};
 }
 
+// `marker mark --job JOB --virtual-time --station line-1 EXTRA…`: a production run of the tests.
+inline CliResult run_mark_job(const std::string& job, const std::vector<std::string>& extra) {
+  std::vector<std::string> args{"mark", "--job", job, "--virtual-time", "--station", "line-1"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return run_cli(args);
+}
+
 // The station's state (its default serial store, its outcome journals) in `dir`/state, so a
 // test's production commands meet a store of their own (marker/store/store_location.hpp).
 inline std::filesystem::path use_station_state(const std::filesystem::path& dir) {

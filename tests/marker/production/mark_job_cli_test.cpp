@@ -48,11 +48,7 @@ struct MarkJobCli : testing::Test {
     ASSERT_EQ(r.code, 0) << r.err;
   }
   void TearDown() override { std::filesystem::remove_all(dir); }
-  test::CliResult mark(std::vector<std::string> extra) {
-    std::vector<std::string> args{"mark", "--job", job, "--virtual-time", "--station", "line-1"};
-    args.insert(args.end(), extra.begin(), extra.end());
-    return run_cli(args);
-  }
+  test::CliResult mark(const std::vector<std::string>& extra) { return test::run_mark_job(job, extra); }
   nlohmann::json serial() {
     return nlohmann::json::parse(run_cli({"serial", "show", "serial", "--job", job, "--json"}).out);
   }

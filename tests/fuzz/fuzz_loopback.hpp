@@ -7,28 +7,44 @@
 #include <sys/time.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdint>
+#include <cstring>
 #include <string>
 
 #include "fuzz_check.hpp"
 
 namespace mark::fuzz {
 
+[[noreturn]] inline void broken_errno(const char* what) {
+  static std::string said;
+  said = std::string(what) + ": " + std::strerror(errno);
+  broken(said.c_str());
+}
+
 inline std::string exchange_on_loopback(int port, const void* data, std::size_t size) {
   const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) broken("cannot open a socket");
+  // Each exchange ends with this side in TIME_WAIT for 60 s (it sends its FIN first, to say the
+  // input is over), holding a local port. At ~2500 inputs a second one source address's ~28 k
+  // ephemeral ports run out within 12 s where the kernel does not reuse TIME_WAIT ports
+  // (net.ipv4.tcp_tw_reuse=0, as on CI machines): connect then fails with EADDRNOTAVAIL, a
+  // failure of the fuzzer, not of the server. So the source address turns through 127.0.1.0/24:
+  // every one has its own port range, and the server sees them all as loopback.
+  static std::uint32_t turn = 0;
+  sockaddr_in from{};
+  from.sin_family = AF_INET;
+  from.sin_addr.s_addr = htonl((127u << 24) | (1u << 8) | (turn++ % 254u + 1u));
+  const int late_port = 1;  // the port is picked at connect, where the whole 4-tuple is known
+  ::setsockopt(fd, IPPROTO_IP, IP_BIND_ADDRESS_NO_PORT, &late_port, sizeof late_port);
+  if (::bind(fd, reinterpret_cast<sockaddr*>(&from), sizeof from) != 0) broken_errno("cannot bind a loopback source address");
   sockaddr_in sa{};
   sa.sin_family = AF_INET;
   sa.sin_port = htons(static_cast<std::uint16_t>(port));
   ::inet_pton(AF_INET, "127.0.0.1", &sa.sin_addr);
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0) broken("cannot connect to the server");
+  if (::connect(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0) broken_errno("cannot connect to the server");
   timeval tv{5, 0};
   ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
-  // Closed with a reset, not through TIME_WAIT: at ~2000 inputs a second every exchange would
-  // otherwise hold a local port for 60 s, and after ~28 k of them (the kernel's ephemeral range)
-  // connect fails with EADDRNOTAVAIL — a failure of the fuzzer, not of the server. The reply has
-  // been read to its end before the close, so nothing is lost.
-  const linger reset{1, 0};
-  ::setsockopt(fd, SOL_SOCKET, SO_LINGER, &reset, sizeof reset);
   const char* bytes = static_cast<const char*>(data);
   for (std::size_t sent = 0; sent < size;) {
     const ssize_t n = ::send(fd, bytes + sent, size - sent, MSG_NOSIGNAL);

@@ -10,10 +10,10 @@
 // then STATUS against GET /api/status (the adapters alone, without a part).
 //
 // Prints per MARK: the round trip (client's send to the reply line), and trigger to first
-// sample = round trip − (the part's wall time from its first sample in the line memory to its
-// end: JobResult wall_time_s − compile_time_s) — an upper bound, since recording the outcome
-// and the reply's way back stay in it; then marks per second. Virtual time by default (the
-// drain as fast as the scanner takes samples), so marks/s is the station's own overhead.
+// sample: the client's send to the drain's first block to the device (DrainStats first_write, on
+// the same steady clock: the durable serial commit, the compile and begin_job are in it); then
+// marks per second. Virtual time by default (the drain as fast as the scanner takes samples; the
+// simulator's dose and quality figures after each part stay in the round trip and marks/s).
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
       const auto last = station.status().last;
       const auto& r = last->objects.at(0).result;
       rtt_ms.push_back(rtt);
-      first_ms.push_back(rtt - 1e3 * (r.wall_time_s - r.compile_time_s));
+      first_ms.push_back(std::chrono::duration<double, std::milli>(r.drain.first_write - t0).count());
       compile_ms.push_back(1e3 * r.compile_time_s);
       if (!client) continue;
       t0 = std::chrono::steady_clock::now();
@@ -163,7 +163,7 @@ int main(int argc, char** argv) {
   std::printf("station_tcp: %d parts (%s), 20-character serial \"SN 00000000000000001\"\n", parts,
               real_time ? "real time" : "virtual time");
   print("MARK round trip", rtt_ms);
-  print("trigger to first sample", first_ms, "  (upper bound)");
+  print("trigger to first sample", first_ms, "  (the client's send to the device's first block)");
   print("of which the compile", compile_ms, "  (the object's text to its first sample in the line memory)");
   std::printf("  marks per second           %.1f%s\n", (http ? 2 : 1) * parts / total_s, http ? " (TCP and HTTP)" : "");
   if (!http) return 0;

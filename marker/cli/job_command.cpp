@@ -44,16 +44,28 @@ struct CheckArgs {
   StoreArgs store;      // where its values come from (--preview)
 };
 
-// The next part's counter values for --preview: the store's, read-only; a store that does not
-// exist yet gives the counters' starts (nullopt).
-std::optional<std::map<std::string, std::int64_t>> store_next_serials(const CheckArgs& a, const JobFile& job) {
+// The next part's counter values and data-list row for --preview: the store's, read-only; a
+// store that does not exist yet gives the counters' starts and the first row (nullopt).
+struct NextPart {
+  std::map<std::string, std::int64_t> serials;
+  std::size_t data_row = 0;
+};
+std::optional<NextPart> store_next_part(const CheckArgs& a, const JobFile& job, const DataList* data) {
   const std::string where = store_location(a.store.store);
   if (where.find("://") == std::string::npos && !std::filesystem::exists(where)) {
     std::cerr << "marker: no store at " << where << " yet: the preview is a fresh store's first part\n";
     return std::nullopt;
   }
   auto store = open_production_store(a.store, StoreAccess::read_only);
-  return next_serials(job, *store, SystemClock().now());
+  NextPart next{next_serials(job, *store, SystemClock().now())};
+  if (data) {
+    const auto row = store->next_data_row({data, job.data->file, 0});
+    if (!row)
+      throw InputError("--preview: data list " + job.data->file + ": every row was taken by an earlier part (" +
+                       std::to_string(data->size()) + " rows in the file): the next part would be refused");
+    next.data_row = *row;
+  }
+  return next;
 }
 
 struct NewArgs {
@@ -95,14 +107,16 @@ int run_check(const CheckArgs& a) {
   // job touches nothing but the job, its fonts and its data list); with --preview the store's next.
   std::map<std::string, std::int64_t> serials;
   const std::optional<DataList> data = job.data ? std::optional(load_data_list(job)) : std::nullopt;
-  const auto next = a.preview.empty() ? std::nullopt : store_next_serials(a, job);
-  const std::vector<ObjectText> texts = first_part_texts(job, variables, SystemClock().now(), &serials,
-                                                         data ? &*data : nullptr, next ? &*next : nullptr);
+  const auto next = a.preview.empty() ? std::nullopt : store_next_part(a, job, data ? &*data : nullptr);
+  const std::vector<ObjectText> texts =
+      first_part_texts(job, variables, SystemClock().now(), &serials, data ? &*data : nullptr,
+                       next ? &next->serials : nullptr, next ? next->data_row : 0);
 
   nlohmann::json out = {{"job", job.job_name}, {"file", a.file}, {"head", job.head.name},
                         {"field_mm", job.head.field_mm}, {"spot_diameter_um", job.head.spot_diameter_um},
                         {"objects", nlohmann::json::array()}, {"serials", serials},
                         {"required_variables", job.required_variables()}};
+  if (data) out["data_row"] = (next ? next->data_row : 0) + 1;  // 1: the first row after the header
   double total_s = 0;
   std::vector<CompiledJob> objects;
   for (std::size_t i = 0; i < job.objects.size(); ++i) {

@@ -93,6 +93,28 @@ struct NewArgs {
   bool force = false;
 };
 
+// Every object of a part compiled as marking would (laid out in the field, planned), what an
+// object requires predicted, and the objects checked apart: InputError naming the object when
+// the part could not be marked. `job check` and `job new` (nothing written that check refuses).
+std::vector<CompiledJob> compile_part(const JobFile& job, const JobFonts& fonts, const std::vector<ObjectText>& texts) {
+  std::vector<CompiledJob> objects;
+  for (std::size_t i = 0; i < job.objects.size(); ++i) {
+    const JobObject& o = job.objects[i];
+    const JobSpec spec = object_spec(job, o, texts[i].text, fonts);
+    try {
+      objects.push_back(compile_job(spec));
+      // What the object requires, predicted for the first part as every part is before it fires.
+      if (o.require.any())
+        if (const auto why = predicted_shortfall(spec, objects.back(), o.require))
+          throw InputError("the simulator predicts " + *why + " (\"require\")");
+    } catch (const InputError& e) {
+      throw InputError(object_place(job, i) + e.what());
+    }
+  }
+  check_objects_apart(job, objects);
+  return objects;
+}
+
 int run_check(const CheckArgs& a) {
   if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
   if (!a.store.store.empty() && a.preview.empty())
@@ -118,21 +140,7 @@ int run_check(const CheckArgs& a) {
                         {"required_variables", job.required_variables()}};
   if (data) out["data_row"] = (next ? next->data_row : 0) + 1;  // 1: the first row after the header
   double total_s = 0;
-  std::vector<CompiledJob> objects;
-  for (std::size_t i = 0; i < job.objects.size(); ++i) {
-    const JobObject& o = job.objects[i];
-    const JobSpec spec = object_spec(job, o, texts[i].text, fonts);
-    try {
-      objects.push_back(compile_job(spec));
-      // What the object requires, predicted for the first part as every part is before it fires.
-      if (o.require.any())
-        if (const auto why = predicted_shortfall(spec, objects.back(), o.require))
-          throw InputError("the simulator predicts " + *why + " (\"require\")");
-    } catch (const InputError& e) {
-      throw InputError(object_place(job, i) + e.what());
-    }
-  }
-  check_objects_apart(job, objects);
+  const std::vector<CompiledJob> objects = compile_part(job, fonts, texts);
   for (std::size_t i = 0; i < job.objects.size(); ++i) {
     const JobObject& o = job.objects[i];
     const JobPen& pen = job.pens.at(o.pen);
@@ -311,7 +319,15 @@ int run_new(const NewArgs& a) {
   nlohmann::ordered_json j = new_job_json(a);
   if (a.speed == kAutoSpeed) put(j["pens"][a.pen], kMarkSpeed.name, auto_pen_speed(j, a.output));
   const std::string text = j.dump(2) + "\n";
-  parse_job(text, a.output);  // what we write must read back: the same checks as any job file
+  // What we write must read back (the same checks as any job file) and its first part must be
+  // markable, as `job check` judges it (in the field, planned, objects apart).
+  const JobFile job = parse_job(text, a.output);
+  const JobFonts fonts(job);
+  try {
+    compile_part(job, fonts, first_part_texts(job, job.variables, SystemClock().now()));
+  } catch (const InputError& e) {
+    throw InputError(std::string(e.what()) + " (nothing written)");
+  }
   write_file_whole(a.output, text);  // a reader never sees half a job
   std::printf("wrote %s\n", a.output.c_str());
   return 0;

@@ -13,6 +13,7 @@
 #include "base/error.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/layout_options.hpp"
+#include "marker/cli/mark_job.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/option_values.hpp"
 #include "marker/cli/part_preview.hpp"
@@ -23,6 +24,7 @@
 #include "marker/job/mark_requirement.hpp"
 #include "marker/layout/figure_json.hpp"
 #include "marker/limits/device_settings.hpp"
+#include "marker/limits/code_settings.hpp"
 #include "marker/limits/head_settings.hpp"
 #include "marker/limits/layout_settings.hpp"
 #include "marker/limits/pen_settings.hpp"
@@ -90,6 +92,9 @@ struct NewArgs {
   std::string device;
   std::string shifts;  // "A=06:00,B=14:00"
   std::vector<std::string> vars;
+  std::string code;  // SYMBOLOGY:DATA
+  double code_module_mm = kNewCodeModule.fallback();
+  std::optional<double> code_x_mm, code_y_mm;
   bool force = false;
 };
 
@@ -210,6 +215,8 @@ void put(nlohmann::ordered_json& json, const SettingName& name, const T& value) 
   (*at)[std::string(key)] = value;
 }
 
+nlohmann::ordered_json new_code_object(const NewArgs& a);
+
 nlohmann::ordered_json new_job_json(const NewArgs& a) {
   nlohmann::ordered_json object = nlohmann::ordered_json::object();
   put(object, kObjectName.name, a.object);
@@ -297,7 +304,55 @@ nlohmann::ordered_json new_job_json(const NewArgs& a) {
   if (!counters.empty()) job["counters"] = counters;
   job["pens"] = {{a.pen, pen}};
   job["objects"] = nlohmann::json::array({object});
+  if (!a.code.empty()) job["objects"].push_back(new_code_object(a));
   return job;
+}
+
+// --code SYMBOLOGY:DATA as a code object at --code-x/--code-y (0 until placed beside the text).
+nlohmann::ordered_json new_code_object(const NewArgs& a) {
+  const std::size_t colon = a.code.find(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 == a.code.size())
+    throw InputError(std::string(kNewCode.name.flag) + " '" + a.code +
+                     "': give SYMBOLOGY:DATA, e.g. datamatrix:SN{serial} (datamatrix, gs1-datamatrix, qr, code128, gs1-128)");
+  nlohmann::ordered_json code = {{"name", "code"},
+                                 {"kind", "code"},
+                                 {"pen", a.pen},
+                                 {"symbology", a.code.substr(0, colon)},
+                                 {"template", a.code.substr(colon + 1)}};
+  put(code, kModule.name, a.code_module_mm);
+  put(code, kCodeX.name, a.code_x_mm.value_or(0));
+  put(code, kCodeY.name, a.code_y_mm.value_or(0));
+  return code;
+}
+
+// The code's centre where --code-x/--code-y leave it open: beside the end of the text that
+// stays put whatever the serial (digits differ in width): left of a left-aligned text, right of
+// a right-aligned one, below a centred one; its quiet zone a spot diameter plus 10 % of the text
+// height (a glyph's side bearing) clear of the first part's strokes. Both objects compiled alone;
+// the objects' clearance check still judges every part.
+void place_code_beside_text(nlohmann::ordered_json& j, const NewArgs& a) {
+  const JobFile job = parse_job(j.dump(), a.output);
+  const JobFonts fonts(job);
+  const std::vector<ObjectText> texts = first_part_texts(job, job.variables, SystemClock().now());
+  const CompiledJob text = compile_job(object_spec(job, job.objects[0], texts[0].text, fonts));
+  const CompiledJob code = compile_job(object_spec(job, job.objects[1], texts[1].text, fonts));
+  if (code.codes.empty()) return;
+  const Box t = text.figure.bounds(), q = code.codes.front().bounds;  // q: around the centre (0, 0)
+  const double margin_mm = job.head.spot_diameter_um / 1000 + 0.1 * a.layout.height_mm;
+  // To 0.01 mm, for a file a person reads, rounded away from the text: the gap only grows.
+  const auto away = [](double v, double sign) { return sign * std::ceil(sign * v * 100) / 100; };
+  double x = 0, y = std::round(t.center().y() * 100) / 100;
+  if (a.layout.align == "right") {
+    x = away(t.max.x() + margin_mm - q.min.x(), 1);
+  } else if (a.layout.align == "center") {
+    x = std::round(t.center().x() * 100) / 100;
+    y = away(t.min.y() - margin_mm - q.max.y(), -1);
+  } else {
+    x = away(t.min.x() - margin_mm - q.max.x(), -1);
+  }
+  auto& o = j["objects"][1];
+  if (!a.code_x_mm) put(o, kCodeX.name, x);
+  if (!a.code_y_mm) put(o, kCodeY.name, y);
 }
 
 // --speed auto: the speed `marker mark --speed auto` picks for the first part's text, rounded
@@ -312,12 +367,25 @@ double auto_pen_speed(const nlohmann::ordered_json& j, const std::string& source
   return std::max(10.0, std::floor(v / 10) * 10);
 }
 
+// A counter of the new job that the station's store does not hold yet refuses to mark: say so
+// now, with the command that creates it (read-only; a store that does not exist holds none).
+void warn_counters_not_in_store(const JobFile& job, const std::string& path) {
+  const std::string where = store_location("");
+  std::unique_ptr<SerialStore> store;
+  if (std::filesystem::exists(where)) store = open_production_store(StoreArgs{}, StoreAccess::read_only);
+  for (const auto& [name, spec] : job.used_counters())
+    if (!store || !store->status(name, nullptr, job.shifts, SystemClock().now()).known)
+      std::cerr << "marker: warning: "
+                << counter_not_in_store(path, name, spec, store ? store->describe() : "sqlite:" + where) << "\n";
+}
+
 int run_new(const NewArgs& a) {
   check_output_path("--output", a.output, {".json"});
   if (std::filesystem::exists(a.output) && !a.force)
     throw InputError(a.output + " exists; give --force to replace it");
   nlohmann::ordered_json j = new_job_json(a);
   if (a.speed == kAutoSpeed) put(j["pens"][a.pen], kMarkSpeed.name, auto_pen_speed(j, a.output));
+  if (!a.code.empty() && !(a.code_x_mm && a.code_y_mm)) place_code_beside_text(j, a);
   const std::string text = j.dump(2) + "\n";
   // What we write must read back (the same checks as any job file) and its first part must be
   // markable, as `job check` judges it (in the field, planned, objects apart).
@@ -330,6 +398,7 @@ int run_new(const NewArgs& a) {
   }
   write_file_whole(a.output, text);  // a reader never sees half a job
   std::printf("wrote %s\n", a.output.c_str());
+  warn_counters_not_in_store(job, a.output);
   return 0;
 }
 
@@ -380,6 +449,10 @@ Command make_job_command() {
         add_setting(*n, kTimeZone, a.time_zone);
         add_setting(*n, kShifts, a.shifts);
         add_setting(*n, kVariables, a.vars);
+        add_setting(*n, kNewCode, a.code)->group("A code beside the text");
+        add_setting(*n, kNewCodeModule, a.code_module_mm)->group("A code beside the text");
+        add_setting(*n, kNewCodeX, a.code_x_mm)->group("A code beside the text");
+        add_setting(*n, kNewCodeY, a.code_y_mm)->group("A code beside the text");
         n->add_flag("--force", a.force, "replace an existing file");
         *subs = {c, n};
         return job;

@@ -94,15 +94,20 @@ void start_station(SerialStore& store, const MarkContext& context, const JobFile
   }
   for (const auto& [name, spec] : job.used_counters()) {
     if (store.status(name, nullptr, job.shifts, context.now).known) continue;
-    std::string msg = a.job + ": counter \"" + name + "\" is not in the serial store " + store.describe() +
-                      ": create it with `marker serial create " + name + " --job " + a.job +
-                      "` (starts at " + std::to_string(spec.start) + ", or --start N) or mark with --create-counters";
+    std::string msg = a.job + ": " + counter_not_in_store(a.job, name, spec, store.describe());
     const std::string old = job_side_store_path(a.job);
     if (a.store.store.empty() && std::filesystem::exists(old))
       msg += "; the job's store from before the station store is " + old + ": mark with --store " + old +
              " or move it (docs/store.md)";
     throw InputError(msg);
   }
+}
+
+std::string counter_not_in_store(const std::string& job_path, const std::string& name, const CounterSpec& spec,
+                                 const std::string& store) {
+  return "counter \"" + name + "\" is not in the serial store " + store +
+         ": create it with `marker serial create " + name + " --job " + job_path + "` (starts at " +
+         std::to_string(spec.start) + ", or --start N) or mark with --create-counters";
 }
 
 namespace {

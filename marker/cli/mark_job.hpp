@@ -47,4 +47,9 @@ int run_mark_job(const MarkJobArgs& args);
 // creates them; what it did on stderr.
 void start_station(SerialStore& store, const MarkContext& context, const JobFile& job, const MarkJobArgs& a);
 
+// "counter \"sn\" is not in the serial store S: create it with `marker serial create …`": what
+// `mark --job` refuses with and `job new` warns of.
+std::string counter_not_in_store(const std::string& job_path, const std::string& name, const CounterSpec& spec,
+                                 const std::string& store);
+
 }  // namespace mark::cli

@@ -5,6 +5,7 @@
 // cover the whole signed 64-bit range the store keeps.
 #include <cstdint>
 
+#include "marker/limits/code_settings.hpp"
 #include "marker/limits/setting.hpp"
 #include "marker/limits/store_limits.hpp"
 
@@ -40,6 +41,24 @@ inline constexpr Choice kRequireCode{
 inline constexpr SettingRef kObjectSettingList[] = {&kObjectName,    &kObjectPen,    &kTemplate,
                                                     &kRequireQuality, &kRequireGrade, &kRequireCode};
 inline constexpr SettingTable kObjectSettings{"object", "Every object", "objects[]", kObjectSettingList};
+
+// `marker job new --code`: a code object (named `code`, on the text's pen) beside the text; the
+// file holds it under the code table's keys (code_settings.hpp).
+inline constexpr Text kNewCode{
+    {"--code", "",
+     "add a code object: SYMBOLOGY:DATA, SYMBOLOGY datamatrix, gs1-datamatrix, qr, code128 or gs1-128, DATA a "
+     "template like --text's"},
+    {}, "none"};
+inline constexpr Quantity kNewCodeModule{{"--code-module", "", "the code's module size"}, {0.01, 20, "mm"}, 0.25};
+inline constexpr Quantity kNewCodeX{
+    {"--code-x", "", "the code's centre x (field frame)"}, kCodePositionBounds, {},
+    "beside the text's fixed end: left of a left-aligned text, right of a right-aligned one; its quiet zone "
+    "a spot diameter plus 10 % of the text height clear of the text"};
+inline constexpr Quantity kNewCodeY{
+    {"--code-y", "", "the code's centre y (field frame)"}, kCodePositionBounds, {},
+    "the text's middle; below a centred text"};
+inline constexpr SettingRef kNewCodeSettingList[] = {&kNewCode, &kNewCodeModule, &kNewCodeX, &kNewCodeY};
+inline constexpr SettingTable kNewCodeSettings{"new-code", "job new: a code beside the text", "", kNewCodeSettingList};
 
 // The job's variable text: when, which shift, which variables.
 inline constexpr Text kTimeZone{

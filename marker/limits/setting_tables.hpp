@@ -23,7 +23,7 @@ namespace mark {
 inline constexpr const SettingTable* kSettingTables[] = {
     &kHeadSettings,    &kPenSettings,    &kLayoutSettings, &kFillSettings,    &kCodeSettings,
     &kMarkingSettings, &kDeviceSettings, &kObjectSettings, &kJobSettings,     &kCounterSettings,
-    &kRunSettings,     &kPeenSettings,   &kCncSettings,    &kGravureSettings, &kStationSettings};
+    &kNewCodeSettings, &kRunSettings,     &kPeenSettings,   &kCncSettings,    &kGravureSettings, &kStationSettings};
 
 // The table with this id, or nullptr.
 const SettingTable* find_setting_table(std::string_view id);

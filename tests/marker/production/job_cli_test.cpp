@@ -123,3 +123,69 @@ TEST_F(JobCli, SerialAdministrationAndLog) {
 
 }  // namespace
 }  // namespace mark
+
+namespace mark {
+namespace {
+
+// `job new --code`: a Data Matrix of the serial placed beside the text's fixed end (left of a
+// left-aligned text), clear of it on every part whatever the digits' widths; every part marked
+// reads back (ZXing and libdmtx, not our code) to its own serial. Centred text: below it.
+TEST_F(JobCli, NewWithACodeBesideTheText) {
+  auto r = run_cli({"job", "new", "-o", job, "--text", "SN {serial}", "--width", "6", "--height", "3", "--x", "-10",
+                    "--speed", "800", "--code", "datamatrix:SN{serial}"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  // The station's store does not hold the counter yet: said now, not first at the line.
+  EXPECT_NE(r.err.find("marker: warning: counter \"serial\" is not in the serial store sqlite:"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find(": create it with `marker serial create serial --job " + job + "` (starts at 1, or --start N)"),
+            std::string::npos)
+      << r.err;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(job));
+  ASSERT_EQ(j["objects"].size(), 2u);
+  const auto& code = j["objects"][1];
+  EXPECT_EQ(code["kind"], "code");
+  EXPECT_EQ(code["symbology"], "datamatrix");
+  EXPECT_EQ(code["template"], "SN{serial}");
+  EXPECT_EQ(code["module_mm"], 0.25);
+  const auto check = run_cli({"job", "check", job, "--json"});
+  ASSERT_EQ(check.code, 0) << check.err;
+  const auto objects = nlohmann::json::parse(check.out)["objects"];
+  // The code's ink ends left of the text's by at least its quiet zone (one module, 0.25 mm)
+  // and the margin (40 µm spot + 0.3 mm), less half a module its ink may stop short of its edge.
+  const double apart = objects[0]["bounds_mm"]["x_min"].get<double>() - objects[1]["bounds_mm"]["x_max"].get<double>();
+  EXPECT_GE(apart, 0.25 + 0.34 - 0.125);
+  EXPECT_LE(apart, 0.25 + 0.34 + 0.25) << "placed beside the text, not far from it";
+  EXPECT_NEAR((objects[1]["bounds_mm"]["y_min"].get<double>() + objects[1]["bounds_mm"]["y_max"].get<double>()) / 2,
+              (objects[0]["bounds_mm"]["y_min"].get<double>() + objects[0]["bounds_mm"]["y_max"].get<double>()) / 2, 0.2);
+  ASSERT_EQ(run_cli({"serial", "create", "serial", "--job", job, "--start", "8"}).code, 0);
+  const auto m = test::run_mark_job(job, {"--count", "4", "--json"});  // 8 to 11: one digit more
+  ASSERT_EQ(m.code, 0) << m.err;
+  std::istringstream lines(m.out);
+  int parts = 0;
+  for (std::string line; std::getline(lines, line); ++parts) {
+    const auto part = nlohmann::json::parse(line);
+    EXPECT_EQ(part["outcome"], "done");
+    const auto& read = part["objects"][1]["codes"][0];
+    EXPECT_TRUE(read["decoded"].get<bool>()) << line;
+    char want[16];
+    std::snprintf(want, sizeof want, "SN%06d", 8 + parts);
+    EXPECT_EQ(read["data"], want);
+  }
+  EXPECT_EQ(parts, 4);
+
+  r = run_cli({"job", "new", "-o", job, "--force", "--text", "SN {serial}", "--align", "center", "--height", "3",
+               "--code", "qr:{serial}"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("is not in the serial store"), std::string::npos) << "created above: " << r.err;
+  const auto centred = nlohmann::json::parse(run_cli({"job", "check", job, "--json"}).out)["objects"];
+  EXPECT_GT(centred[0]["bounds_mm"]["y_min"].get<double>(), centred[1]["bounds_mm"]["y_max"].get<double>() + 0.25 * 4)
+      << "below the text, its 4-module quiet zone clear";
+
+  r = run_cli({"job", "new", "-o", job, "--force", "--text", "X", "--code", "datamatrix"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "marker: --code 'datamatrix': give SYMBOLOGY:DATA, e.g. datamatrix:SN{serial} (datamatrix, "
+                   "gs1-datamatrix, qr, code128, gs1-128)\n");
+}
+
+}  // namespace
+}  // namespace mark

@@ -95,7 +95,7 @@ std::vector<PortWrite> job_port_words(std::uint16_t signals) {
   test::LoopbackBench bench;
   bench.device->set_signal_bits(signals);
   const std::size_t before = bench.board.port_writes().size();
-  bench.device->begin_job(test::header_with(test::golden_pen()));
+  bench.device->begin_job(test::header_with(test::fast_pen()));
   bench.device->submit(test::golden_rectangle_commands());
   EXPECT_EQ(bench.device->end_job().outcome, DeviceState::done);
   const auto all = bench.board.port_writes();

@@ -113,14 +113,16 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "station_board_io: part %d: no part within 30 s of the edge\n", i + 1);
         return 1;
       }
+      const auto marked = marking_at, end = ended_at;
+      lock.unlock();  // the listener takes it under the station's lock: never the other way round
       const auto last = station.status().last;
       if (!last || last->outcome != mark::JobOutcome::done) {
         std::fprintf(stderr, "station_board_io: part %d did not end done\n", i + 1);
         return 1;
       }
       const auto& r = last->objects.at(0).result;
-      marking_ms.push_back(ms(marking_at - t0));
-      first_ms.push_back(ms(ended_at - t0) - 1e3 * (r.wall_time_s - r.compile_time_s));
+      marking_ms.push_back(ms(marked - t0));
+      first_ms.push_back(ms(end - t0) - 1e3 * (r.wall_time_s - r.compile_time_s));
     }
     if (io->triggers() != static_cast<std::uint64_t>(parts) || station.status().parts != static_cast<std::uint64_t>(parts)) {
       std::fprintf(stderr, "station_board_io: %llu triggers, %llu parts for %d edges\n",

@@ -27,23 +27,14 @@
 
 #include "marker/cli/emulated_lmc_device.hpp"
 #include "marker/cli/serve_board_io.hpp"
+#include "bench/station_bench.hpp"
 #include "marker/cli/serve_source.hpp"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-constexpr const char* kJob = R"({
-  "format": "marker-job/1", "head": "SL10", "time_zone": "UTC",
-  "counters": {"serial": {"start": 1, "width": 17}},
-  "pens": {"fine": {"speed_mm_s": 2000, "power_pct": 100, "frequency_khz": 40}},
-  "objects": [{"name": "serial", "pen": "fine", "template": "SN {serial}", "height_mm": 2, "x_mm": -30, "y_mm": 0}]
-})";
-
-double quantile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
-}
+using mark::bench::kSerial20Job;
+using mark::bench::quantile;
 
 void print(const char* what, const std::vector<double>& ms, const char* note = "") {
   std::printf("  %-22s median %.3f ms  p99 %.3f ms%s\n", what, quantile(ms, 0.5), quantile(ms, 0.99), note);
@@ -66,7 +57,7 @@ int main(int argc, char** argv) {
 
   const auto dir = std::filesystem::temp_directory_path() / ("station-board-bench-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  std::ofstream(dir / "serial20.json") << kJob;
+  std::ofstream(dir / "serial20.json") << kSerial20Job;
   std::vector<double> marking_ms, first_ms;
   {
     mark::cli::MarkJobArgs a;

@@ -38,6 +38,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench/station_bench.hpp"
 #include "marker/cli/serve_source.hpp"
 #include "marker/station/http_server.hpp"
 #include "marker/station/tcp_server.hpp"
@@ -47,17 +48,8 @@
 
 namespace {
 
-constexpr const char* kJob = R"({
-  "format": "marker-job/1", "head": "SL10", "time_zone": "UTC",
-  "counters": {"serial": {"start": 1, "width": 17}},
-  "pens": {"fine": {"speed_mm_s": 2000, "power_pct": 100, "frequency_khz": 40}},
-  "objects": [{"name": "serial", "pen": "fine", "template": "SN {serial}", "height_mm": 2, "x_mm": -30, "y_mm": 0}]
-})";
-
-double quantile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
-}
+using mark::bench::kSerial20Job;
+using mark::bench::quantile;
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -229,7 +221,7 @@ int main(int argc, char** argv) {
 
   const auto dir = std::filesystem::temp_directory_path() / ("station-bench-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  std::ofstream(dir / "serial20.json") << kJob;
+  std::ofstream(dir / "serial20.json") << kSerial20Job;
   std::vector<double> rtt_ms, first_ms, compile_ms, http_ms, status_ms, http_status_ms;
   double total_s = 0;
   if (clients > 1) {

@@ -8,15 +8,16 @@
 # FreeType), job files, data lists (CSV), the built-in font's glyph script, the PGM and PNG readers, code data (GS1,
 # UDI, the zint wrapper), head profiles, the option-value parsers (numbers, "CX,CY,R", "WxH", --stock, --travel), the camera
 # option (--camera KEY=VALUE,…), the station's HTTP requests (station_http: raw bytes to a server on
-# loopback; modbus_request: raw Modbus TCP frames to a server on loopback), the per-part file names
+# loopback; modbus_request: raw Modbus TCP frames to a server on loopback; board_io_option: serve's --trigger
+# and --signal), the per-part file names
 # of mark --job --preview (part_file), and
 # the LMC driver's readers (lmc_reply: replies and command words; cor_file: EzCad .cor files and
-# captures). All 20 at the default 20 s run for about five minutes, plus the build.
+# captures). All 21 at the default 20 s run for about five minutes, plus the build.
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${MARKER_FUZZ_BUILD:-$root/build-fuzz}
-all_targets=(jhf lff cxf outline_font job data_list glyph_script pgm png option_values camera_option plant_option lmc_reply cor_file code_data head_profile station_line station_http modbus_request part_file)
+all_targets=(jhf lff cxf outline_font job data_list glyph_script pgm png option_values camera_option plant_option lmc_reply cor_file code_data head_profile station_line station_http modbus_request board_io_option part_file)
 
 seconds=20
 if [[ ${1:-} =~ ^[0-9]+$ ]]; then

@@ -107,7 +107,10 @@ Urb EmulatedBoard::out(std::span<const std::uint8_t> bytes) {
       }
       if (*fault != Urb::done) return *fault;
     }
-    wire_.push_back(WireRecord{now, false, w, 0, status_locked()});
+    // ReadPort is left out of the wire record (counted in read_ports): a station's trigger polls
+    // it every millisecond, and the record would grow for as long as the station runs.
+    if (w.opcode() != static_cast<std::uint16_t>(Op::ReadPort))
+      wire_.push_back(WireRecord{now, false, w, 0, status_locked()});
     on_single(w);
     if (drop_next_reply_) {  // SingleFault::no_answer: taken, never answered
       drop_next_reply_ = false;
@@ -215,7 +218,10 @@ void EmulatedBoard::on_single(const Word& w) {
       r.w = {0, p[0], p[1], 0};
       break;
     }
-    case Op::ReadPort: r.w = {0, options_.input_port, 0, 0}; break;
+    case Op::ReadPort:
+      r.w = {0, inputs_, 0, 0};  // w1, where meerk40t's read_port()[1] reads the pins
+      ++read_ports_;
+      break;
     case Op::GetMarkTime: {
       const std::uint64_t t = executor_.figures().ticks;
       r.w = {0, std::uint16_t(t >> 16), std::uint16_t(t & 0xFFFF), 0};
@@ -421,6 +427,21 @@ void EmulatedBoard::unplug() {
 // ---------------------------------------------------------------------------------------------
 // Inspection
 
+void EmulatedBoard::set_inputs(std::uint16_t bits) {
+  std::lock_guard lock(mutex_);
+  inputs_ = bits;
+}
+
+std::uint16_t EmulatedBoard::inputs() const {
+  std::lock_guard lock(mutex_);
+  return inputs_;
+}
+
+std::vector<PortWrite> EmulatedBoard::port_writes() const {
+  std::lock_guard lock(mutex_);
+  return executor_.port_writes();
+}
+
 BoardState EmulatedBoard::state() const {
   std::lock_guard lock(mutex_);
   BoardState s;
@@ -441,6 +462,7 @@ BoardState EmulatedBoard::state() const {
   s.packets_lost = packets_lost_;
   s.cor_lines = cor_lines_;
   s.cor_table = cor_table_;
+  s.read_ports = read_ports_;
   return s;
 }
 

@@ -51,7 +51,7 @@ struct BoardOptions {
   std::uint32_t serial = 0x4C4D4301;
   std::array<std::uint16_t, 3> version{0x0001, 0x0010, 0x0002};
   int laser_bit = 0, red_bit = 8;
-  std::uint16_t input_port = 0;
+  std::uint16_t input_port = 0;  // the input word ReadPort answers until set_inputs()
   Sink<ScanSample>* scanner = nullptr;  // where the executed list goes (may be null)
 };
 
@@ -116,6 +116,7 @@ struct BoardState {
   std::size_t packets_received = 0, packets_lost = 0;
   std::size_t cor_lines = 0;
   std::optional<std::uint16_t> cor_table;  // the last WriteCorTable argument
+  std::size_t read_ports = 0;  // ReadPort commands answered
 };
 
 class EmulatedBoard : private ListFeed {
@@ -150,10 +151,16 @@ class EmulatedBoard : private ListFeed {
   void unplug();
   std::function<void()> on_unplug;
 
+  // The input pins (ReadPort's w1) from now on: what a foot switch or a PLC output would do.
+  void set_inputs(std::uint16_t bits);
+  std::uint16_t inputs() const;
+
   // Inspection.
   BoardState state() const;
+  // Every output port word the board took, in order (single WritePort and list WritePort).
+  std::vector<PortWrite> port_writes() const;
   bool unplugged() const;
-  std::vector<WireRecord> wire() const;
+  std::vector<WireRecord> wire() const;  // every transfer but ReadPort (BoardState::read_ports)
   std::vector<std::vector<Word>> packets() const;  // every packet received, in order
   std::vector<std::string> violations() const;
   std::vector<Vec2> red_path() const;
@@ -201,6 +208,8 @@ class EmulatedBoard : private ListFeed {
   std::size_t cor_lines_ = 0;
   std::optional<std::uint16_t> cor_table_;
   bool laser_enabled_ = false;
+  std::uint16_t inputs_ = 0;
+  std::size_t read_ports_ = 0;
 
   std::thread clock_;
   std::atomic<bool> clock_run_{false};

@@ -26,6 +26,11 @@ ListExecutor::ListExecutor(const FieldUnits& units, int laser_bit, int red_bit, 
   update_power();
 }
 
+void ListExecutor::set_port(std::uint16_t bits, bool list) {
+  port_ = bits;
+  port_writes_.push_back({bits, list});
+}
+
 void ListExecutor::update_power() {
   if (limits_of(behaviour_.source).master_oscillator) {
     light_power_ = std::min<std::uint16_t>(power_, 0xFFF) / 4095.0;
@@ -192,7 +197,7 @@ bool ListExecutor::fetch(ListFeed& feed) {
       case Op::PolygonDelay:
         polygon_s_ = std::max(0.0, decode_polygon_delay(w.p(1), w.p(2), units_.polygon_unit()));
         break;
-      case Op::ListWritePort: port_ = w.p(1); break;
+      case Op::ListWritePort: set_port(w.p(1), true); break;
       case Op::FiberOpenMO: mo_ = w.p(1) != 0; break;
       case Op::MarkCurrent:
       case Op::QSwitchPeriod:

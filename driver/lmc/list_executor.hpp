@@ -82,6 +82,13 @@ struct ExecutorFigures {
   double pulse_width_ns = 0;   // FiberYLPMPulseWidth, if sent
 };
 
+// One output port word the board took (the tests read what a station's signals did to it).
+struct PortWrite {
+  std::uint16_t bits = 0;
+  bool list = false;  // list WritePort (0x8011), else the single WritePort (0x0021)
+  bool operator==(const PortWrite&) const = default;
+};
+
 class ListExecutor {
  public:
   ListExecutor(const FieldUnits& units, int laser_bit, int red_bit, ExecutorBehaviour behaviour = {});
@@ -105,8 +112,10 @@ class ListExecutor {
   bool finished() const { return finished_; }
 
   // Single-command state.
-  void write_port(std::uint16_t bits) { port_ = bits; }
+  void write_port(std::uint16_t bits) { set_port(bits, false); }
   std::uint16_t port() const { return port_; }
+  // Every port word taken, single and list WritePort alike, in order (the tests' port record).
+  const std::vector<PortWrite>& port_writes() const { return port_writes_; }
   void set_enabled(bool on) { enabled_ = on; }
   void set_mo(bool open) { mo_ = open; }
   bool mo_open() const { return mo_; }
@@ -135,6 +144,7 @@ class ListExecutor {
   ScanSample sample(bool light) const;
   void set_laser_word(const Word& w);  // a source's laser word: power, frequency
   void update_power();
+  void set_port(std::uint16_t bits, bool list);
 
   FieldUnits units_;
   int laser_bit_, red_bit_;
@@ -160,6 +170,7 @@ class ListExecutor {
   bool in_underrun_ = false;
   ExecutorFigures figures_;
   std::vector<Vec2> red_path_;
+  std::vector<PortWrite> port_writes_;
 };
 
 }  // namespace mark::lmc

@@ -76,9 +76,29 @@ DeviceDescription LmcDevice::describe() const {
   return d;
 }
 
+// The one place a port word is composed: the laser and red-pointer bits this device owns, and
+// the station's signal bits (which set_signal_bits() keeps clear of those two).
 std::uint16_t LmcDevice::port_bits(bool laser, bool red) const {
   return static_cast<std::uint16_t>((laser ? 1u << options_.laser_port_bit : 0u) |
-                                    (red ? 1u << options_.red_pointer_bit : 0u));
+                                    (red ? 1u << options_.red_pointer_bit : 0u) |
+                                    signals_.load(std::memory_order_acquire));
+}
+
+std::uint16_t LmcDevice::reserved_port_bits() const {
+  return static_cast<std::uint16_t>((1u << options_.laser_port_bit) | (1u << options_.red_pointer_bit));
+}
+
+void LmcDevice::set_signal_bits(std::uint16_t bits) noexcept {
+  signals_.store(static_cast<std::uint16_t>(bits & ~reserved_port_bits()), std::memory_order_release);
+}
+
+std::uint16_t LmcDevice::read_inputs() { return session_.command(word(Op::ReadPort)).w[1]; }
+
+bool LmcDevice::write_outputs() {
+  std::lock_guard job(job_);
+  if (lifecycle_.state() == DeviceState::running) return false;
+  session_.command(word(Op::WritePort, port_bits(false, red_on_.load())));
+  return true;
 }
 
 void LmcDevice::begin_job(const JobHeader& header) {
@@ -425,6 +445,7 @@ void LmcDevice::set_red_pointer(bool on) {
   if (lifecycle_.state() == DeviceState::running)
     lifecycle_.refuse("set_red_pointer", "the red pointer is switched between jobs");
   session_.command(word(Op::WritePort, port_bits(false, on)));
+  red_on_.store(on);
 }
 
 FrameReport LmcDevice::frame(const std::vector<std::vector<Vec2>>& paths, const FrameOptions& o) {
@@ -446,6 +467,7 @@ FrameReport LmcDevice::frame(const std::vector<std::vector<Vec2>>& paths, const 
   FrameReport report;
   const std::uint64_t packets_before = packets_;
   lifecycle_.begin("frame");
+  red_on_.store(false);  // however the frame ends, it leaves the red pointer off
   try {
     // The laser enable bit stays clear and the master oscillator closed for the whole frame.
     session_.command(word(Op::ResetList));

@@ -95,6 +95,23 @@ class LmcDevice : public CommandDevice {
   // then the red pointer is switched off. Idle only. Points outside the field are refused.
   FrameReport frame(const std::vector<std::vector<Vec2>>& paths, const FrameOptions& options);
 
+  // Board I/O (docs/lmc.md "Board I/O"). The input port: ReadPort (0x0025), its reply's w1, as
+  // meerk40t's read_port()[1]. Any thread, any state: the session interleaves it between a job's
+  // transactions (the wire lock). Throws Aborted while an abort is pending, LinkError when the
+  // board does not answer.
+  std::uint16_t read_inputs();
+  // The output bits a station drives (ready / busy / done / error): OR'ed into every port word
+  // this device writes from now on — the job's WritePorts, the stop sequence's port-off, the
+  // red pointer's. The laser and red-pointer bits (reserved_port_bits()) are masked off: a
+  // signal never switches the laser. No I/O, never blocks (callable under another lock).
+  void set_signal_bits(std::uint16_t bits) noexcept;
+  std::uint16_t signal_bits() const noexcept { return signals_.load(std::memory_order_acquire); }
+  std::uint16_t reserved_port_bits() const;
+  // Puts the port word on the board now (laser off, the red pointer as last set, the signal
+  // bits) when no job or frame runs, and returns true; while one runs it returns false and
+  // writes nothing (its own port words carry the bits). Throws as read_inputs().
+  bool write_outputs();
+
  private:
   struct Fault;
   void check_commands(std::span<const DeviceCommand> commands) const;
@@ -134,6 +151,8 @@ class LmcDevice : public CommandDevice {
   double first_packet_s_ = -1;            // begin_job → first list packet on the wire
   double device_time_s_ = 0;
   std::atomic<bool> laser_on_{false};     // the board's laser port as last set
+  std::atomic<bool> red_on_{false};       // the red pointer as set_red_pointer() left it
+  std::atomic<std::uint16_t> signals_{0}; // set_signal_bits(): in every port word
   std::optional<StopOutcome> last_stop_;  // guarded by report_mutex_
   Vec2 position_{0, 0};
 };

@@ -35,6 +35,8 @@ class EmulatedLmcDevice : public CommandDevice {
 
   SimScanner& scanner() { return *scanner_; }
   lmc::LmcDevice& board() { return *board_; }
+  // The emulated board itself: tests set its input pins and read the port words it took.
+  lmc::EmulatedBoard& emulated_board() { return link_->board(); }
 
  private:
   std::unique_ptr<SimScanner> scanner_;  // before board_: the board writes into it until it goes

@@ -1,6 +1,8 @@
 // `marker serve --job FILE [--device D] [--listen 127.0.0.1:PORT] [--http 127.0.0.1:PORT]
 //  [--store PATH|URL] [--station NAME] [--set NAME=VALUE …] [--create-counters] [--virtual-time]
-//  [--modbus HOST:PORT [--modbus-allow ADDR[/BITS] …]] [--max-connections N]`: the marking station (docs/station.md). Loads the job once, keeps the
+//  [--modbus HOST:PORT [--modbus-allow ADDR[/BITS] …]] [--max-connections N]
+//  [--trigger lmc-input:BIT] [--signal ready=B,busy=B,done=B,error=B] [--trigger-debounce-ms MS]
+//  [--trigger-min-pulse-ms MS]`: the marking station (docs/station.md). Loads the job once, keeps the
 // device open and marks on command over the TCP line protocol and, with --http, over HTTP +
 // JSON, with --modbus over Modbus TCP (marker/station/). One log line per event on stderr. SIGTERM / Ctrl-C: a part in progress
 // is aborted with the laser off and recorded aborted (its numbers void), every connection is
@@ -14,6 +16,7 @@
 #include "marker/cli/commands.hpp"
 #include "marker/cli/interrupt.hpp"
 #include "marker/cli/option_ranges.hpp"
+#include "marker/cli/serve_board_io.hpp"
 #include "marker/cli/serve_source.hpp"
 #include "marker/limits/device_settings.hpp"
 #include "marker/limits/marking_settings.hpp"
@@ -33,6 +36,7 @@ struct ServeArgs {
   std::string modbus;      // empty: no Modbus interface
   std::vector<std::string> modbus_allow;
   int max_connections = 0;
+  BoardIoArgs board_io;  // --trigger, --signal
 };
 
 // One line per event: UTC time, then what happened (a line at a time from any thread).
@@ -60,8 +64,11 @@ int serve(const ServeArgs& a) {
   for (const std::string& net : a.modbus_allow) allow.push_back(parse_allowed_net(net, "--modbus-allow"));
   if (!allow.empty() && !modbus_address) throw InputError("--modbus-allow: give --modbus HOST:PORT too");
   if (modbus_address) check_modbus_access(*modbus_address, allow);  // before the store and device open
+  const std::optional<BoardIoOptions> board_io_options = parse_board_io(a.board_io);
   JobSource source(a.job);
   Station station(source, log_line);
+  std::unique_ptr<BoardIo> board_io;
+  if (board_io_options) board_io = open_board_io(station, source.device(), *board_io_options, log_line);
   TcpServer server(station, address, a.max_connections, log_line);
   std::unique_ptr<HttpServer> http;
   if (http_address) {
@@ -77,6 +84,7 @@ int serve(const ServeArgs& a) {
   log_line("listening on " + address.host + ":" + std::to_string(server.port()) + " job " + a.job.job);
   server.serve([] { return interrupt_flag().requested(); });
   if (modbus) modbus->stop();  // first: no start coil can begin a part after the abort below
+  if (board_io) board_io->stop();  // nor an input edge
   // SIGTERM: the laser off and a part in progress recorded aborted before anything closes.
   const StationState was = station.abort();
   log_line(std::string("stopping (state ") + std::string(to_string(was)) + ")");
@@ -102,6 +110,10 @@ Command make_serve_command() {
         add_setting(*sub, kModbus, a->modbus);
         add_setting(*sub, kModbusAllow, a->modbus_allow);
         add_setting(*sub, kMaxConnections, a->max_connections);
+        add_setting(*sub, kTrigger, a->board_io.trigger);
+        add_setting(*sub, kSignal, a->board_io.signal);
+        add_setting(*sub, kTriggerDebounce, a->board_io.debounce_ms);
+        add_setting(*sub, kTriggerMinPulse, a->board_io.min_pulse_ms);
         add_setting(*sub, kSet, p.sets);
         add_setting(*sub, kStation, p.station);
         add_setting(*sub, kCreateCounters, p.create_counters);

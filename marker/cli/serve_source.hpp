@@ -30,6 +30,8 @@ class JobSource : public PartSource {
   std::optional<std::int64_t> next_serial(const std::string& counter) override;
   void load(const std::string& job) override;
   std::string job() const override { return args_.job; }
+  // The device the station marks on (open for the station's life): board I/O reaches its ports.
+  Device& device() { return *opened_.device; }
   // Through a read-only open of the store of its own (a snapshot, as `marker log`), opened at the
   // first read: the station's connection stays the marking thread's alone.
   void read_log(const AuditFilter& filter, const std::function<bool(const AuditRow&)>& row) override;

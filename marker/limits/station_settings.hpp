@@ -25,7 +25,26 @@ inline constexpr Text kModbusAllow{
 inline constexpr Count kMaxConnections{
     {"--max-connections", "", "TCP clients at a time, and Modbus clients (one more gets ERR toomany / is closed)"}, {1, 64}, 8};
 
-inline constexpr SettingRef kStationSettingList[] = {&kListen, &kHttp, &kModbus, &kModbusAllow, &kMaxConnections};
+// Board I/O (docs/station.md "Board I/O"): the LMC board's own input and output pins.
+inline constexpr Text kTrigger{
+    {"--trigger", "", "lmc-input:BIT: a rising edge on the LMC board's input pin BIT (0 to 15) starts one mark; --device lmc or lmc-emulated"},
+    {},
+    "off"};
+inline constexpr Text kSignal{
+    {"--signal", "", "ready=BIT,busy=BIT,done=BIT,error=BIT (any of them, bits 0 to 15, each once): the station's state on the LMC board's output pins"},
+    {},
+    "off"};
+inline constexpr Quantity kTriggerDebounce{
+    {"--trigger-debounce-ms", "", "--trigger: the input counts as changed once it held the new level this long"},
+    {0, 1000, "ms"},
+    5};
+inline constexpr Quantity kTriggerMinPulse{
+    {"--trigger-min-pulse-ms", "", "--trigger: a rising edge marks once the input stayed high this long (shorter pulses mark nothing)"},
+    {0, 1000, "ms"},
+    5};
+
+inline constexpr SettingRef kStationSettingList[] = {&kListen,  &kHttp,   &kModbus,          &kModbusAllow,     &kMaxConnections,
+                                                     &kTrigger, &kSignal, &kTriggerDebounce, &kTriggerMinPulse};
 inline constexpr SettingTable kStationSettings{"station", "Station", "", kStationSettingList};
 
 }  // namespace mark

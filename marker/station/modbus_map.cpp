@@ -35,10 +35,11 @@ ModbusImage modbus_image(const StationStatus& status, std::uint32_t refused_star
   ModbusImage m;
   const bool marking = status.state == StationState::marking;
   m.coils[kCoilStart] = marking ? 1 : 0;  // abort and reset are actions: they read 0
-  m.inputs[kInputReady] = status.state == StationState::idle ? 1 : 0;
-  m.inputs[kInputBusy] = marking ? 1 : 0;
-  m.inputs[kInputDone] = !marking && status.last && status.last->good() ? 1 : 0;
-  m.inputs[kInputError] = status.state == StationState::error ? 1 : 0;
+  const StationLights lights = station_lights(status.state, status.last);  // the board's outputs too
+  m.inputs[kInputReady] = lights.ready ? 1 : 0;
+  m.inputs[kInputBusy] = lights.busy ? 1 : 0;
+  m.inputs[kInputDone] = lights.done ? 1 : 0;
+  m.inputs[kInputError] = lights.error ? 1 : 0;
   const auto done = status.outcomes.find("done");
   put32(m.registers, kRegisterMarksDone, saturated(done == status.outcomes.end() ? 0 : done->second));
   put32(m.registers, kRegisterSerial, status.last ? modbus_serial_value(*status.last) : 0);

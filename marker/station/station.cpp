@@ -14,6 +14,15 @@ std::string_view to_string(StationState state) {
   return "?";
 }
 
+StationLights station_lights(StationState state, const std::optional<PartResult>& last) {
+  StationLights l;
+  l.ready = state == StationState::idle;
+  l.busy = state == StationState::marking;
+  l.done = !l.busy && last && last->good();
+  l.error = state == StationState::error;
+  return l;
+}
+
 namespace {
 StationError busy() { return {"busy", "a part is being marked; try again when it ends (nothing queued)"}; }
 }  // namespace

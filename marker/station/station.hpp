@@ -78,6 +78,14 @@ struct StationEvent {
   std::optional<PartResult> part;  // set: a part ended (state: the state it ended in)
 };
 
+// The handshake every interface shows a PLC (Modbus discrete inputs 0–3, the board's output
+// bits): ready = idle (a start would mark), busy = marking, done = not marking and the last part
+// ended done (a level, cleared when the next part starts), error = in error (needs a reset).
+struct StationLights {
+  bool ready = false, busy = false, done = false, error = false;
+};
+StationLights station_lights(StationState state, const std::optional<PartResult>& last);
+
 struct StationStatus {
   StationState state = StationState::idle;
   std::string job;

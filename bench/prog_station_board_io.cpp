@@ -11,8 +11,9 @@
 // - edge → marking: the pin set on the board to the station entering `marking` (the poll, the
 //   debounce and minimum pulse, mark_async) — measured directly;
 // - edge → first sample: the pin set to the part's end, minus the part's wall time from its first
-//   sample to its end (JobResult wall_time_s − compile_time_s), as station_tcp measures it from
-//   MARK: an upper bound (recording the outcome stays in it).
+//   sample to its end (JobResult wall_time_s − compile_time_s): an upper bound (recording the
+//   outcome and the simulator's figures stay in it). station_tcp reads the drain's first block
+//   directly (DrainStats first_write); the LMC path sends command lists, with no drain.
 // Before each part the pin is low for ten polls, so every edge is a fresh one.
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -128,6 +129,6 @@ int main(int argc, char** argv) {
               "polled every 1 ms\n",
               parts, real_time ? "real time" : "virtual time", debounce_ms, min_pulse_ms);
   print("edge to marking", marking_ms, "  (poll + debounce/min pulse + mark_async)");
-  print("edge to first sample", first_ms, "  (upper bound, as station_tcp's)");
+  print("edge to first sample", first_ms, "  (upper bound)");
   return 0;
 }

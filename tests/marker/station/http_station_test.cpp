@@ -285,7 +285,8 @@ TEST(StationHttp, OperatorPageIsServedAndItsScriptParses) {
   EXPECT_EQ(page->get_header_value("Content-Type"), "text/html; charset=utf-8");
   const std::string& html = page->body;
   for (const char* id : {"id=\"state\"", "id=\"mark\"", "id=\"abort\"", "id=\"pause\"", "id=\"reset\"", "id=\"next\"",
-                         "id=\"last_text\"", "id=\"last_serials\"", "id=\"log\"", "new EventSource(\"/api/events\")"})
+                         "id=\"last_text\"", "id=\"last_serials\"", "id=\"log\"", "call(\"GET\", \"/api/events\")",
+                         "call(\"GET\", \"/api/preview.png\")", "id=\"token\"", "\"Authorization\": \"Bearer \" + t"})
     EXPECT_NE(html.find(id), std::string::npos) << id;
   EXPECT_EQ(html.find("http://"), std::string::npos);  // nothing fetched from elsewhere
   EXPECT_EQ(html.find("https://"), std::string::npos);

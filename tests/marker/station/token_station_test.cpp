@@ -305,3 +305,68 @@ TEST(ServeToken, ServesOnAnyAddressWithAToken) {
 
 }  // namespace
 }  // namespace mark
+
+namespace mark {
+namespace {
+
+// The operator page's own script, run by Node.js (its fetch is undici: an HTTP client we did
+// not write) against a station with a token, with just enough of a DOM to hold what it shows:
+// it asks for the token on the first 401, then with the token typed marks a part from its Mark
+// button and shows the part the station recorded. Not a browser (a browser test is future work).
+constexpr const char* kPageHarness = R"js(
+const base = process.argv[2], token = process.argv[3];
+const els = {};
+const el = id => els[id] || (els[id] = {id, textContent: "", className: "", hidden: id === "login", value: "", src: "",
+  tBodies: [{textContent: "", insertRow: () => ({insertCell: () => ({})})}]});
+globalThis.document = {getElementById: el};
+const stored = {};
+globalThis.sessionStorage = {getItem: k => (k in stored ? stored[k] : null), setItem: (k, v) => { stored[k] = String(v); }};
+const realFetch = globalThis.fetch;
+globalThis.fetch = (path, options) => realFetch(base + path, options);
+URL.createObjectURL = () => "blob:picture";
+URL.revokeObjectURL = () => {};
+setTimeout(() => { console.log("timeout " + JSON.stringify(els, ["id", "textContent", "hidden"])); process.exit(1); }, 15000);
+const until = (what, check) => new Promise(done => {
+  const poll = setInterval(() => { if (check()) { clearInterval(poll); console.log(what); done(); } }, 20);
+});
+(async () => {
+  await until("login shown", () => !el("login").hidden);
+  el("token").value = token;
+  el("login").onsubmit({preventDefault() {}});
+  await until("idle shown", () => el("state").textContent === "idle" && el("picture").src === "blob:picture");
+  el("mark").onclick();
+  await until("part shown", () => el("last_outcome").textContent === "done");
+  console.log("part " + el("last_id").textContent + " " + el("last_serials").textContent + " " + el("last_text").textContent);
+  process.exit(0);
+})();
+)js";
+
+TEST(StationHttpToken, OperatorPageScriptAsksForTheTokenThenMarks) {
+  if (std::system("node --version > /dev/null 2>&1") != 0) GTEST_SKIP() << "node (Debian nodejs) is not installed";
+  Served s(true, 8, {}, kToken);
+  httplib::Client c("127.0.0.1", s.http_port());
+  const auto page = c.Get("/");
+  ASSERT_TRUE(page);
+  const std::string& html = page->body;
+  const std::size_t from = html.find("<script>"), to = html.find("</script>");
+  ASSERT_NE(from, std::string::npos);
+  ASSERT_NE(to, std::string::npos);
+  const auto dir = test::fresh_temp_dir("marker_page_token");
+  const auto script = dir / "page.js";
+  std::ofstream(script) << kPageHarness << html.substr(from + 8, to - from - 8);
+  const std::string command = "timeout 30 node " + script.string() + " http://127.0.0.1:" +
+                              std::to_string(s.http_port()) + " " + kToken + " 2>&1";
+  FILE* p = ::popen(command.c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string out;
+  char chunk[1024];
+  for (std::size_t n; (n = std::fread(chunk, 1, sizeof chunk, p)) > 0;) out.append(chunk, n);
+  const int status = ::pclose(p);
+  EXPECT_EQ(status, 0) << out;
+  EXPECT_EQ(out, "login shown\nidle shown\npart shown\npart 2 serial = 41 SN 000041 LOT A00\n");
+  std::filesystem::remove_all(dir);
+  test::expect_one_part(s.close(), 2, 41, Outcome::done, "SN 000041 LOT A00");
+}
+
+}  // namespace
+}  // namespace mark

@@ -218,14 +218,6 @@ TEST(StationHttpToken, EveryApiRequestNeedsTheBearerToken) {
   test::expect_one_part(s.close(), 2, 41, Outcome::done, "SN 000041 LOT A00");
 }
 
-TEST(StationHttpToken, NoTokenSetNeedsNoHeader) {
-  Served s;
-  httplib::Client c("127.0.0.1", s.http_port());
-  const auto r = c.Get("/api/status");
-  ASSERT_TRUE(r);
-  EXPECT_EQ(r->status, 200);
-}
-
 // --- marker serve ---
 
 TEST(ServeToken, BeyondLoopbackNeedsAToken) {

@@ -3,17 +3,23 @@
 // folder, `marker serve`'s parts (JobSource → Station → TcpServer) in process, one client
 // sending MARK back to back.
 //
-//   station_tcp [--parts N] [--real-time] [--http]
+//   station_tcp [--parts N] [--real-time] [--http] [--clients N]
 //
 // --http: an HttpServer on the same station too, and an httplib::Client (keep-alive) sending
 // POST /api/mark after each MARK, alternately, so both see the same store and machine load;
 // then STATUS against GET /api/status (the adapters alone, without a part).
 //
+// --clients N (N > 1): the load run of issue 22. N connections send MARK at once until N parts
+// are done (a `busy` reply waits 1 ms, as a PLC polls, and tries again); then the store must hold
+// exactly one done row per OK reply and no serial twice, and the process's RSS after the first
+// part, after a tenth of them (the allocator's per-thread arenas grown) and after the last is
+// printed: flat memory is the last against the tenth.
+//
 // Prints per MARK: the round trip (client's send to the reply line), and trigger to first
-// sample = round trip − (the part's wall time from its first sample in the line memory to its
-// end: JobResult wall_time_s − compile_time_s) — an upper bound, since recording the outcome
-// and the reply's way back stay in it; then marks per second. Virtual time by default (the
-// drain as fast as the scanner takes samples), so marks/s is the station's own overhead.
+// sample: the client's send to the drain's first block to the device (DrainStats first_write, on
+// the same steady clock: the durable serial commit, the compile and begin_job are in it); then
+// marks per second. Virtual time by default (the drain as fast as the scanner takes samples; the
+// simulator's dose and quality figures after each part stay in the round trip and marks/s).
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -26,12 +32,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <set>
+#include <string>
 #include <thread>
 #include <vector>
 
 #include "marker/cli/serve_source.hpp"
 #include "marker/station/http_server.hpp"
 #include "marker/station/tcp_server.hpp"
+#include "marker/store/open_store.hpp"
 // Last: it brings <resolv.h>, whose `_res` macro breaks Eigen's headers included after it.
 #include <httplib.h>
 
@@ -69,6 +79,136 @@ std::string ask(int fd, std::string& buf, const std::string& command) {
   return reply;
 }
 
+int connect_loopback(int port) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in sa{};
+  sa.sin_family = AF_INET;
+  sa.sin_port = htons(static_cast<std::uint16_t>(port));
+  ::inet_pton(AF_INET, "127.0.0.1", &sa.sin_addr);
+  if (::connect(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0) return -1;
+  return fd;
+}
+
+// The process's resident set, MiB (VmRSS of /proc/self/status).
+double rss_mib() {
+  std::ifstream in("/proc/self/status");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  return -1;
+}
+
+struct LoadRun {
+  int ok = 0, busy = 0;
+  std::set<long long> serials;  // as the OK replies gave them
+  double rss_first_mib = 0, rss_tenth_mib = 0, rss_last_mib = 0;
+  double seconds = 0;
+  std::string failure;
+};
+
+// `clients` connections marking until `parts` parts are done (see the head comment).
+LoadRun load_run(int port, int parts, int clients) {
+  LoadRun run;
+  std::mutex m;
+  std::atomic<int> done{0};
+  {  // the first part alone: the RSS after it is the station's working set, fonts and caches loaded
+    const int fd = connect_loopback(port);
+    std::string buf;
+    const std::string r = ask(fd, buf, "MARK");
+    ::close(fd);
+    if (r.rfind("OK id=", 0) != 0) return run.failure = "first part: " + r, run;
+    run.ok = 1;
+    run.serials.insert(std::stoll(r.substr(r.find(" serial=") + 8)));
+    done = 1;
+    run.rss_first_mib = rss_mib();
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<std::thread> threads;
+  for (int i = 0; i < clients; ++i)
+    threads.emplace_back([&] {
+      const int fd = connect_loopback(port);
+      std::string buf;
+      while (done.load() < parts) {
+        const std::string r = ask(fd, buf, "MARK");
+        std::lock_guard lock(m);
+        if (r.rfind("OK id=", 0) == 0) {
+          ++done;
+          ++run.ok;
+          if (run.ok == std::max(2, parts / 10)) run.rss_tenth_mib = rss_mib();
+          const std::size_t at = r.find(" serial=");
+          if (at == std::string::npos || !run.serials.insert(std::stoll(r.substr(at + 8))).second)
+            run.failure = "a serial replied twice or missing: " + r;
+        } else if (r.rfind("ERR busy ", 0) == 0) {
+          ++run.busy;
+          m.unlock();
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+          m.lock();
+        } else {
+          run.failure = "unexpected reply: " + r;
+          done = parts;
+        }
+      }
+      ::close(fd);
+    });
+  for (auto& t : threads) t.join();
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  run.rss_last_mib = rss_mib();
+  return run;
+}
+
+// The store after a load run: one done row per OK reply, the same serials, none twice.
+std::string check_store(const std::string& store, const LoadRun& run) {
+  std::multiset<long long> stored;
+  int rows = 0;
+  for (const mark::AuditRow& r : mark::open_store(store, mark::StoreAccess::read_only)->log()) {
+    if (r.mark.kind == mark::AuditKind::create) continue;
+    ++rows;
+    if (!r.outcome || r.outcome->outcome != mark::Outcome::done) return "row " + std::to_string(r.id) + " is not done";
+    stored.insert(r.mark.serials.at("serial"));
+  }
+  if (rows != run.ok) return std::to_string(rows) + " rows for " + std::to_string(run.ok) + " OK replies";
+  if (std::set<long long>(stored.begin(), stored.end()).size() != stored.size()) return "a serial stored twice";
+  if (!std::equal(stored.begin(), stored.end(), run.serials.begin(), run.serials.end()))
+    return "the stored serials are not the replied ones";
+  return "";
+}
+
+mark::cli::MarkJobArgs job_args(const std::filesystem::path& dir, bool real_time) {
+  mark::cli::MarkJobArgs a;
+  a.job = (dir / "serial20.json").string();
+  a.store.store = (dir / "bench.sqlite").string();
+  a.station = "bench";
+  a.create_counters = true;
+  a.virtual_time = !real_time;
+  a.device = "sim";
+  return a;
+}
+
+// The load run on a station of its own; prints its figures, 1 when the store disagrees.
+int report_load(const mark::cli::MarkJobArgs& a, int parts, int clients) {
+  LoadRun run;
+  {
+    mark::cli::JobSource source(a);
+    mark::Station station(source);
+    mark::TcpServer server(station, mark::parse_listen_address("127.0.0.1:0", "--listen"), 8);
+    std::atomic<bool> stop{false};
+    std::thread serving([&] { server.serve([&] { return stop.load(); }); });
+    run = load_run(server.port(), parts, clients);
+    stop = true;
+    serving.join();
+  }
+  const std::string wrong = run.failure.empty() ? check_store(a.store.store, run) : run.failure;
+  std::printf("station_tcp: load run, %d clients, %d parts (%s)\n", clients, run.ok,
+              a.virtual_time ? "virtual time" : "real time");
+  std::printf("  busy replies               %d (each retried after 1 ms)\n", run.busy);
+  std::printf("  marks per second           %.1f\n", (run.ok - 1) / run.seconds);
+  std::printf("  RSS after the first part   %.1f MiB\n", run.rss_first_mib);
+  std::printf("  RSS after a tenth of them  %.1f MiB (every thread's allocator arena in use)\n", run.rss_tenth_mib);
+  std::printf("  RSS after the last part    %.1f MiB (%+.1f MiB since the tenth)\n", run.rss_last_mib,
+              run.rss_last_mib - run.rss_tenth_mib);
+  std::printf("  store                      %s\n", wrong.empty() ? "one done row per OK reply, no serial twice" : wrong.c_str());
+  return wrong.empty() ? 0 : 1;
+}
+
 void print(const char* what, const std::vector<double>& ms, const char* note = "") {
   std::printf("  %-26s median %.3f ms  p99 %.3f ms%s\n", what, quantile(ms, 0.5), quantile(ms, 0.99), note);
 }
@@ -81,6 +221,8 @@ int main(int argc, char** argv) {
   bool real_time = false;
   app.add_option("--parts", parts, "MARKs to send")->check(CLI::Range(2, 1'000'000));
   app.add_flag("--real-time", real_time, "drain at the scanner's clock (default: virtual time)");
+  int clients = 1;
+  app.add_option("--clients", clients, "concurrent clients: more than 1 is the load run")->check(CLI::Range(1, 8));
   bool http = false;
   app.add_flag("--http", http, "also POST /api/mark after each MARK, and STATUS against GET /api/status");
   CLI11_PARSE(app, argc, argv);
@@ -90,26 +232,19 @@ int main(int argc, char** argv) {
   std::ofstream(dir / "serial20.json") << kJob;
   std::vector<double> rtt_ms, first_ms, compile_ms, http_ms, status_ms, http_status_ms;
   double total_s = 0;
+  if (clients > 1) {
+    const int code = report_load(job_args(dir, real_time), parts, clients);
+    std::filesystem::remove_all(dir);
+    return code;
+  }
   {
-    mark::cli::MarkJobArgs a;
-    a.job = (dir / "serial20.json").string();
-    a.store.store = (dir / "bench.sqlite").string();
-    a.station = "bench";
-    a.create_counters = true;
-    a.virtual_time = !real_time;
-    a.device = "sim";
-    mark::cli::JobSource source(a);
+    mark::cli::JobSource source(job_args(dir, real_time));
     mark::Station station(source);
     mark::TcpServer server(station, mark::parse_listen_address("127.0.0.1:0", "--listen"), 8);
     std::atomic<bool> stop{false};
     std::thread serving([&] { server.serve([&] { return stop.load(); }); });
-
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in sa{};
-    sa.sin_family = AF_INET;
-    sa.sin_port = htons(static_cast<std::uint16_t>(server.port()));
-    ::inet_pton(AF_INET, "127.0.0.1", &sa.sin_addr);
-    if (::connect(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0) return 1;
+    const int fd = connect_loopback(server.port());
+    if (fd < 0) return 1;
     std::unique_ptr<mark::HttpServer> http_server;
     std::unique_ptr<httplib::Client> client;
     if (http) {
@@ -132,7 +267,7 @@ int main(int argc, char** argv) {
       const auto last = station.status().last;
       const auto& r = last->objects.at(0).result;
       rtt_ms.push_back(rtt);
-      first_ms.push_back(rtt - 1e3 * (r.wall_time_s - r.compile_time_s));
+      first_ms.push_back(std::chrono::duration<double, std::milli>(r.drain.first_write - t0).count());
       compile_ms.push_back(1e3 * r.compile_time_s);
       if (!client) continue;
       t0 = std::chrono::steady_clock::now();
@@ -163,7 +298,7 @@ int main(int argc, char** argv) {
   std::printf("station_tcp: %d parts (%s), 20-character serial \"SN 00000000000000001\"\n", parts,
               real_time ? "real time" : "virtual time");
   print("MARK round trip", rtt_ms);
-  print("trigger to first sample", first_ms, "  (upper bound)");
+  print("trigger to first sample", first_ms, "  (the client's send to the device's first block)");
   print("of which the compile", compile_ms, "  (the object's text to its first sample in the line memory)");
   std::printf("  marks per second           %.1f%s\n", (http ? 2 : 1) * parts / total_s, http ? " (TCP and HTTP)" : "");
   if (!http) return 0;

@@ -18,7 +18,6 @@
 #include <functional>
 #include <span>
 #include <string_view>
-#include <thread>
 #include <vector>
 
 #include "driver/device.hpp"
@@ -93,7 +92,7 @@ StreamResult stream_samples(SampleDevice<T>& device, const JobHeader& header, Pr
     if (options.progress) {
       while (!memory.aborted() && drain.samples_out() < options.total_samples) {
         options.progress(drain.samples_out(), options.total_samples);
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        if (drain.finished_within(std::chrono::milliseconds(100))) break;
       }
     }
   } catch (...) {

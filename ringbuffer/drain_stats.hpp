@@ -1,5 +1,6 @@
 #pragma once
 // What a drain did, returned by Drain::join().
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 
@@ -30,6 +31,9 @@ struct DrainStats {
   // (real time) samples the device got after the request fell on its clock. −1 / 0 otherwise.
   double stop_latency_us = -1;
   std::uint64_t stop_latency_samples = 0;
+  // When the device got its first block (steady clock; the epoch when it got none): trigger-to-
+  // first-sample latency is measured from a caller's own clock reading against it.
+  std::chrono::steady_clock::time_point first_write{};
 };
 
 const char* to_string(DrainEnd end);

@@ -44,16 +44,28 @@ struct CheckArgs {
   StoreArgs store;      // where its values come from (--preview)
 };
 
-// The next part's counter values for --preview: the store's, read-only; a store that does not
-// exist yet gives the counters' starts (nullopt).
-std::optional<std::map<std::string, std::int64_t>> store_next_serials(const CheckArgs& a, const JobFile& job) {
+// The next part's counter values and data-list row for --preview: the store's, read-only; a
+// store that does not exist yet gives the counters' starts and the first row (nullopt).
+struct NextPart {
+  std::map<std::string, std::int64_t> serials;
+  std::size_t data_row = 0;
+};
+std::optional<NextPart> store_next_part(const CheckArgs& a, const JobFile& job, const DataList* data) {
   const std::string where = store_location(a.store.store);
   if (where.find("://") == std::string::npos && !std::filesystem::exists(where)) {
     std::cerr << "marker: no store at " << where << " yet: the preview is a fresh store's first part\n";
     return std::nullopt;
   }
   auto store = open_production_store(a.store, StoreAccess::read_only);
-  return next_serials(job, *store, SystemClock().now());
+  NextPart next{next_serials(job, *store, SystemClock().now())};
+  if (data) {
+    const auto row = store->next_data_row({data, job.data->file, 0});
+    if (!row)
+      throw InputError("--preview: data list " + job.data->file + ": every row was taken by an earlier part (" +
+                       std::to_string(data->size()) + " rows in the file): the next part would be refused");
+    next.data_row = *row;
+  }
+  return next;
 }
 
 struct NewArgs {
@@ -81,29 +93,10 @@ struct NewArgs {
   bool force = false;
 };
 
-int run_check(const CheckArgs& a) {
-  if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
-  if (!a.store.store.empty() && a.preview.empty())
-    throw InputError("--store applies to --preview (the next part's values): give --preview FILE");
-  const JobFile job = read_job_file(a.file);
-  const auto variables = job_variables(job, parse_sets(a.sets));
-  std::vector<std::string> warnings;
-  const JobFonts fonts(job, &warnings);
-  for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
-  for (const std::string& w : text_repeat_warnings(job)) std::cerr << "marker: warning: " << w << "\n";
-  // The first part of a fresh store (the store, if any, is not read without --preview: checking a
-  // job touches nothing but the job, its fonts and its data list); with --preview the store's next.
-  std::map<std::string, std::int64_t> serials;
-  const std::optional<DataList> data = job.data ? std::optional(load_data_list(job)) : std::nullopt;
-  const auto next = a.preview.empty() ? std::nullopt : store_next_serials(a, job);
-  const std::vector<ObjectText> texts = first_part_texts(job, variables, SystemClock().now(), &serials,
-                                                         data ? &*data : nullptr, next ? &*next : nullptr);
-
-  nlohmann::json out = {{"job", job.job_name}, {"file", a.file}, {"head", job.head.name},
-                        {"field_mm", job.head.field_mm}, {"spot_diameter_um", job.head.spot_diameter_um},
-                        {"objects", nlohmann::json::array()}, {"serials", serials},
-                        {"required_variables", job.required_variables()}};
-  double total_s = 0;
+// Every object of a part compiled as marking would (laid out in the field, planned), what an
+// object requires predicted, and the objects checked apart: InputError naming the object when
+// the part could not be marked. `job check` and `job new` (nothing written that check refuses).
+std::vector<CompiledJob> compile_part(const JobFile& job, const JobFonts& fonts, const std::vector<ObjectText>& texts) {
   std::vector<CompiledJob> objects;
   for (std::size_t i = 0; i < job.objects.size(); ++i) {
     const JobObject& o = job.objects[i];
@@ -119,6 +112,35 @@ int run_check(const CheckArgs& a) {
     }
   }
   check_objects_apart(job, objects);
+  return objects;
+}
+
+int run_check(const CheckArgs& a) {
+  if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
+  if (!a.store.store.empty() && a.preview.empty())
+    throw InputError("--store applies to --preview (the next part's values): give --preview FILE");
+  const JobFile job = read_job_file(a.file);
+  const auto variables = job_variables(job, parse_sets(a.sets));
+  std::vector<std::string> warnings;
+  const JobFonts fonts(job, &warnings);
+  for (const std::string& w : warnings) std::cerr << "marker: warning: " << w << "\n";
+  for (const std::string& w : text_repeat_warnings(job)) std::cerr << "marker: warning: " << w << "\n";
+  // The first part of a fresh store (the store, if any, is not read without --preview: checking a
+  // job touches nothing but the job, its fonts and its data list); with --preview the store's next.
+  std::map<std::string, std::int64_t> serials;
+  const std::optional<DataList> data = job.data ? std::optional(load_data_list(job)) : std::nullopt;
+  const auto next = a.preview.empty() ? std::nullopt : store_next_part(a, job, data ? &*data : nullptr);
+  const std::vector<ObjectText> texts =
+      first_part_texts(job, variables, SystemClock().now(), &serials, data ? &*data : nullptr,
+                       next ? &next->serials : nullptr, next ? next->data_row : 0);
+
+  nlohmann::json out = {{"job", job.job_name}, {"file", a.file}, {"head", job.head.name},
+                        {"field_mm", job.head.field_mm}, {"spot_diameter_um", job.head.spot_diameter_um},
+                        {"objects", nlohmann::json::array()}, {"serials", serials},
+                        {"required_variables", job.required_variables()}};
+  if (data) out["data_row"] = (next ? next->data_row : 0) + 1;  // 1: the first row after the header
+  double total_s = 0;
+  const std::vector<CompiledJob> objects = compile_part(job, fonts, texts);
   for (std::size_t i = 0; i < job.objects.size(); ++i) {
     const JobObject& o = job.objects[i];
     const JobPen& pen = job.pens.at(o.pen);
@@ -297,7 +319,15 @@ int run_new(const NewArgs& a) {
   nlohmann::ordered_json j = new_job_json(a);
   if (a.speed == kAutoSpeed) put(j["pens"][a.pen], kMarkSpeed.name, auto_pen_speed(j, a.output));
   const std::string text = j.dump(2) + "\n";
-  parse_job(text, a.output);  // what we write must read back: the same checks as any job file
+  // What we write must read back (the same checks as any job file) and its first part must be
+  // markable, as `job check` judges it (in the field, planned, objects apart).
+  const JobFile job = parse_job(text, a.output);
+  const JobFonts fonts(job);
+  try {
+    compile_part(job, fonts, first_part_texts(job, job.variables, SystemClock().now()));
+  } catch (const InputError& e) {
+    throw InputError(std::string(e.what()) + " (nothing written)");
+  }
   write_file_whole(a.output, text);  // a reader never sees half a job
   std::printf("wrote %s\n", a.output.c_str());
   return 0;

@@ -88,7 +88,7 @@ std::vector<ObjectText> JobSource::preview(std::map<std::string, std::int64_t>* 
   const SysTime now = SystemClock().now();
   const std::map<std::string, std::int64_t> values = next_serials(loaded_->job, *store_, now);
   if (serials) *serials = values;
-  return render_objects(loaded_->job, loaded_->runner->variables(), now, values);
+  return loaded_->runner->next_texts(now, values);
 }
 
 std::string JobSource::preview_png() {

@@ -104,15 +104,31 @@ JobSpec PartRunner::marked_spec(std::size_t i, const std::string& text) const {
   return spec;
 }
 
+std::vector<ObjectText> PartRunner::next_texts(SysTime now, const std::map<std::string, std::int64_t>& serials) {
+  std::map<std::string, std::string> columns;
+  if (data_) {
+    const auto row = store_.next_data_row(data_pick());
+    if (!row)
+      throw InputError("data list " + job_.data->file + ": every row was taken by an earlier part (" +
+                       std::to_string(data_->size()) + " rows in the file): the next part would be refused");
+    columns = data_->values(*row);
+  }
+  return render_objects(job_, variables_, now, serials, &columns);
+}
+
+DataPick PartRunner::data_pick() const {
+  DataPick pick;
+  if (data_) pick = {&*data_, job_.data->file, next_row_};
+  return pick;
+}
+
 PartResult PartRunner::mark_next(SysTime now, const PartOptions& options) {
   context_.now = now;
   std::vector<CompiledJob> compiled;
   if (options.phase) options.phase(PartPhase::allocating, {});
   // Rendering, layout, planning and every refusal happen inside the transaction: a refused
   // part consumes nothing.
-  DataPick pick;
-  if (data_) pick = {&*data_, job_.data->file, next_row_};
-  const Allocation a = store_.allocate(counters_, job_.shifts, context_, pick, [&](const PartValues& v) {
+  const Allocation a = store_.allocate(counters_, job_.shifts, context_, data_pick(), [&](const PartValues& v) {
     std::map<std::string, std::string> columns;
     if (v.data_row) columns = data_->values(*v.data_row);
     std::vector<ObjectText> texts = render_objects(job_, variables_, v.now, v.serials, &columns);

@@ -104,6 +104,10 @@ class PartRunner {
   // Row `original` marked again.
   PartResult remark(std::int64_t original, SysTime now, const PartOptions& options);
 
+  // The texts the next part would mark with these counter values: the variables, and the data
+  // list's next untaken row (read-only; InputError when every row is taken). A preview's.
+  std::vector<ObjectText> next_texts(SysTime now, const std::map<std::string, std::int64_t>& serials);
+
   // The variables of the parts from now on (a station's SET between parts); job_variables
   // checked them against the job's templates.
   void set_variables(std::map<std::string, std::string> variables) { variables_ = std::move(variables); }
@@ -114,6 +118,7 @@ class PartRunner {
   // simulated scanner, and a part the simulator says falls short is refused (InputError, before
   // anything fires; inside the allocation nothing is consumed).
   std::vector<CompiledJob> compile(const std::vector<ObjectText>& texts);
+  DataPick data_pick() const;  // the data list's rows from the next this run may take
   void refuse_predicted_shortfall(std::size_t object, const std::string& text, const CompiledJob& compiled,
                                   const Point& home);
   // Object `i`'s job with the part's text in it.

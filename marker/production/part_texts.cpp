@@ -58,7 +58,8 @@ std::vector<ObjectText> first_part_texts(const JobFile& job,
                                          const std::map<std::string, std::string>& variables,
                                          SysTime now, std::map<std::string, std::int64_t>* serials,
                                          const DataList* data,
-                                         const std::map<std::string, std::int64_t>* values) {
+                                         const std::map<std::string, std::int64_t>* values,
+                                         std::size_t data_row) {
   std::map<std::string, std::int64_t> starts;
   for (const auto& [name, spec] : job.used_counters()) starts[name] = spec.start;
   if (values)
@@ -67,7 +68,7 @@ std::vector<ObjectText> first_part_texts(const JobFile& job,
   for (const std::string& v : job.required_variables())
     if (!vars.count(v)) vars[v] = "<" + v + ">";
   std::map<std::string, std::string> columns;
-  if (data && data->size()) columns = data->values(0);
+  if (data && data_row < data->size()) columns = data->values(data_row);
   for (const JobObject& o : job.objects)
     for (const std::string& c : o.text_template().columns())
       if (!columns.count(c)) columns[c] = "<" + c + ">";

@@ -35,13 +35,15 @@ DataList load_data_list(const JobFile& job);
 // The texts of a first part on a fresh store (`job check`, `job new --speed auto`): every
 // counter at its start (given back in `serials`), variables without a value shown as <name>,
 // the data list's first row (or <column> without one). With `values`, the counters take those
-// instead (`job check --preview`: the store's next part, next_serials).
+// and the data list row `data_row` instead (`job check --preview`: the store's next part,
+// next_serials and SerialStore::next_data_row).
 std::vector<ObjectText> first_part_texts(const JobFile& job,
                                          const std::map<std::string, std::string>& variables,
                                          SysTime now,
                                          std::map<std::string, std::int64_t>* serials = nullptr,
                                          const DataList* data = nullptr,
-                                         const std::map<std::string, std::int64_t>* values = nullptr);
+                                         const std::map<std::string, std::int64_t>* values = nullptr,
+                                         std::size_t data_row = 0);
 
 // The values the store gives the next part from each counter the job uses, by its rules at
 // `now` (nothing consumed; a counter the store does not know yet: its start). Throws InputError

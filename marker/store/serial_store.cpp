@@ -25,7 +25,23 @@ std::string row_summary(const std::optional<AuditRow>& r, std::int64_t id) {
          (r->outcome ? std::string(to_string(r->outcome->outcome)) : std::string("pending")) + ")";
 }
 
+// The first data-list row from `data.from` on that no part has taken (its identity in `key`);
+// nothing when every one is taken.
+std::optional<std::size_t> first_free_row(StoreReader& rd, const DataPick& data, std::string* key) {
+  for (std::size_t i = data.from; i < data.list->size(); ++i) {
+    std::string k = sha256_hex(data.list->identity(i));
+    if (rd.data_row_owner(k)) continue;
+    if (key) *key = std::move(k);
+    return i;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
+
+std::optional<std::size_t> SerialStore::next_data_row(const DataPick& data) {
+  return first_free_row(*backend_->begin_read(), data, nullptr);
+}
 
 SerialStore::SerialStore(std::unique_ptr<StoreBackend> backend, StoreSettings settings)
     : backend_(std::move(backend)), settings_(std::move(settings)) {}
@@ -194,10 +210,7 @@ Allocation SerialStore::allocate(const std::map<std::string, CounterSpec>& count
     std::string row_key;
     if (data.list) {
       tx->lock_data_list(data.name);
-      for (std::size_t i = data.from; i < data.list->size() && !values.data_row; ++i) {
-        std::string key = sha256_hex(data.list->identity(i));
-        if (!tx->data_row_owner(key)) values.data_row = i, row_key = std::move(key);
-      }
+      values.data_row = first_free_row(*tx, data, &row_key);
       if (!values.data_row)
         throw PartRefused("data list " + data.name + ": every row" +
                           (data.from ? " from row " + std::to_string(data.from + 1) + " on" : std::string()) +

@@ -174,6 +174,9 @@ class SerialStore {
   Allocation remark(std::int64_t original, const MarkContext& ctx, const std::string& reason = "",
                     bool allow_changed_job = false);
 
+  // The data-list row the next part would take (read-only; nothing: every row is taken).
+  std::optional<std::size_t> next_data_row(const DataPick& data);
+
   // With a spec, `next` follows its rules at `now`; without, it is the stored next value.
   // Read-only.
   CounterStatus status(const std::string& name, const CounterSpec* spec, const ShiftTable& shifts,

@@ -284,5 +284,36 @@ TEST_F(PartPicturesCli, JobCheckPreviewDrawsTheStoresNextPartWithoutConsumingIt)
   }
 }
 
+// With a data list the next part is the store's next untaken row, not the list's first: a part
+// marked takes row 1 ("VIN-A"), and `job check --preview` then shows row 2's text and says so.
+TEST_F(PartPicturesCli, JobCheckPreviewTakesTheStoresNextDataListRow) {
+  std::ofstream(dir / "plates.csv") << "vin\nVIN-A\nVIN-B\n";
+  std::ofstream(job) << R"({
+    "format": "marker-job/1", "head": "SL10", "time_zone": "UTC",
+    "data": {"file": "plates.csv"},
+    "counters": {"serial": {"start": 41, "width": 6}},
+    "pens": {"fine": {"speed_mm_s": 800, "power_pct": 100, "frequency_khz": 40}},
+    "objects": [{"name": "sn", "pen": "fine", "template": "{col:vin} {serial}", "height_mm": 3, "x_mm": -10, "y_mm": 0}]
+  })";
+  const auto first = run_cli({"job", "check", job, "--preview", path("c1.png"), "--json"});
+  ASSERT_EQ(first.code, 0) << first.err;
+  EXPECT_EQ(nlohmann::json::parse(first.out)["objects"][0]["text"], "VIN-A 000041");
+  EXPECT_EQ(nlohmann::json::parse(first.out)["data_row"], 1);
+  const auto m = mark({"--json"});
+  ASSERT_EQ(m.code, 0) << m.err;
+  const auto c = run_cli({"job", "check", job, "--preview", path("c2.png"), "--json"});
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_EQ(nlohmann::json::parse(c.out)["objects"][0]["text"], "VIN-B 000042");
+  EXPECT_EQ(nlohmann::json::parse(c.out)["data_row"], 2);
+  ASSERT_EQ(mark({"--json"}).code, 0);  // row 2 taken as job check drew it
+  const auto none = run_cli({"job", "check", job, "--preview", path("c3.png")});
+  EXPECT_EQ(none.code, 1);  // job check: the job cannot be marked
+  EXPECT_NE(none.err.find("--preview: data list plates.csv: every row was taken by an earlier part (2 rows in the file): "
+                           "the next part would be refused"),
+            std::string::npos)
+      << none.err;
+  EXPECT_FALSE(std::filesystem::exists(path("c3.png")));
+}
+
 }  // namespace
 }  // namespace mark

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "base/error.hpp"
+#include "marker/station/station_commands.hpp"
 #include "tests/marker/station/served_station.hpp"
 
 namespace mark {
@@ -116,6 +117,46 @@ TEST(StationTcp, ListenRefusesNonLoopback) {
   EXPECT_THROW(parse_listen_address("127.0.0.1:70000", "--listen"), InputError);
   EXPECT_THROW(parse_listen_address("0.0.0.0:70000", "--listen", true), InputError);
   EXPECT_THROW(parse_listen_address("127.0.0.1", "--listen"), InputError);
+}
+
+}  // namespace
+}  // namespace mark
+
+namespace mark {
+namespace {
+
+// PREVIEW on a job with a data list shows the row the next part takes: the first untaken one,
+// after a part took row 1; once every row is taken it says the next part would be refused.
+TEST(StationTcp, PreviewShowsTheDataListRowTheNextPartTakes) {
+  const auto dir = test::fresh_store_dir("station-data");
+  std::ofstream(dir / "plates.csv") << "vin\nVIN-A\nVIN-B\n";
+  std::ofstream(dir / "plates.json") << R"({
+    "format": "marker-job/1", "head": "SL10", "time_zone": "UTC",
+    "data": {"file": "plates.csv"},
+    "counters": {"serial": {"start": 41, "width": 6}},
+    "pens": {"fine": {"speed_mm_s": 800, "power_pct": 100, "frequency_khz": 40}},
+    "objects": [{"name": "sn", "pen": "fine", "template": "{col:vin} {serial}", "height_mm": 3, "x_mm": -10, "y_mm": 0}]
+  })";
+  {
+    cli::MarkJobArgs a;
+    a.job = (dir / "plates.json").string();
+    a.store.store = (dir / "plates.sqlite").string();
+    a.station = "s1";
+    a.create_counters = true;
+    a.virtual_time = true;
+    a.device = "sim";
+    cli::JobSource source(a);
+    Station station(source);
+    const auto preview = [&] { return station_command(station, "PREVIEW"); };
+    EXPECT_NE(preview().find("VIN-A 000041"), std::string::npos) << preview();
+    ASSERT_EQ(station_command(station, "MARK").rfind("OK id=", 0), 0u);
+    EXPECT_NE(preview().find("VIN-B 000042"), std::string::npos) << preview();
+    ASSERT_EQ(station_command(station, "MARK").rfind("OK id=", 0), 0u);
+    EXPECT_NE(preview().find("data list plates.csv: every row was taken by an earlier part (2 rows in the file)"),
+              std::string::npos)
+        << preview();
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -7,8 +7,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <postgresql/libpq-fe.h>  // the test's own session, beside the store's
+
+#include <atomic>
 #include <chrono>
 #include <random>
+#include <thread>
 
 #include "marker/store/digest.hpp"
 #include "marker/store/postgres_backend.hpp"
@@ -111,6 +115,94 @@ TEST(PostgresStore, EightStationsShareOneCounterWithoutDuplicatesOrGaps) {
   SerialStore second(open_postgres_store(server.url()));
   store.start_station(ctx);
   EXPECT_THROW(second.start_station(ctx), StoreError);
+}
+
+// Another session (plain libpq, not our code) that holds the counter's row locked, as an
+// administrator's open transaction or a stuck station would.
+class RowLocker {
+ public:
+  explicit RowLocker(const std::string& url) : c_(PQconnectdb(url.c_str())) {
+    if (PQstatus(c_) != CONNECTION_OK) throw std::runtime_error(PQerrorMessage(c_));
+  }
+  ~RowLocker() { PQfinish(c_); }
+  // The rows the statement gave.
+  int exec(const char* sql) {
+    PGresult* r = PQexec(c_, sql);
+    const bool ok = PQresultStatus(r) == PGRES_COMMAND_OK || PQresultStatus(r) == PGRES_TUPLES_OK;
+    const std::string why = PQresultErrorMessage(r);
+    const int rows = PQntuples(r);
+    PQclear(r);
+    if (!ok) throw std::runtime_error(std::string(sql) + ": " + why);
+    return rows;
+  }
+
+ private:
+  PGconn* c_;
+};
+
+// What the issue found missing (a row locked by another session blocked a station 44.5 s in
+// silence, Ctrl-C ignored, no reconnect): a lock held elsewhere ends the allocation after the
+// lock timeout with a busy error and nothing consumed; a cancel request (Ctrl-C's counter)
+// ends a long wait at once; a connection the server drops is reconnected on the next attempt,
+// the station's name taken again, and the next number follows.
+TEST(PostgresStore, LockTimeoutCancelAndReconnect) {
+  const auto bin = test::PostgresServer::find_binaries();
+  if (bin.empty()) GTEST_SKIP() << "PostgreSQL server binaries not found; scripts/setup.sh installs them";
+  test::PostgresServer server(bin);
+  const std::map<std::string, CounterSpec> counters{{"sn", test::plain_counter()}};
+  std::atomic<std::uint64_t> interrupts{0};
+  StoreSettings settings;
+  settings.retry = {2, 10, 10};  // a retry, after 10 ms: a reconnect needs one
+  settings.interrupts = [&] { return interrupts.load(); };
+  PgOptions quick;
+  quick.lock_timeout_ms = 300;
+  SerialStore store(open_postgres_store(server.url(), StoreAccess::create, quick), settings);
+  test::create_counters(store, counters);
+  MarkContext ctx;
+  ctx.station = "line-1";
+  ctx.job = "line.json";
+  ctx.job_sha256 = sha256_hex("line");
+  ctx.now = SystemClock().now();
+  store.start_station(ctx);
+  EXPECT_EQ(store.allocate(counters, ShiftTable{}, ctx, test::render_sn()).serials.at("sn"), 1);
+
+  RowLocker other(server.url());
+  other.exec("BEGIN");
+  other.exec("SELECT * FROM counters WHERE name = 'sn' FOR UPDATE");
+  try {
+    store.allocate(counters, ShiftTable{}, ctx, test::render_sn());
+    ADD_FAILURE() << "allocated through a row another session holds";
+  } catch (const StoreError& e) {
+    EXPECT_EQ(e.kind(), StoreErrorKind::busy) << e.what();
+  }
+
+  // A long lock timeout, and Ctrl-C after 300 ms: the wait ends as cancelled, not timed out.
+  PgOptions patient;
+  patient.lock_timeout_ms = 60000;
+  SerialStore waiting(open_postgres_store(server.url(), StoreAccess::existing, patient), settings);
+  std::thread ctrl_c([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    ++interrupts;
+  });
+  try {
+    waiting.allocate(counters, ShiftTable{}, ctx, test::render_sn());
+    ADD_FAILURE() << "allocated through a row another session holds";
+  } catch (const StoreError& e) {
+    EXPECT_EQ(e.kind(), StoreErrorKind::cancelled) << e.what();
+  }
+  ctrl_c.join();
+  other.exec("ROLLBACK");
+
+  // The server drops every other session (as a restart or a failover does).
+  ASSERT_GE(other.exec("SELECT pg_terminate_backend(pid) FROM pg_stat_activity "
+                       "WHERE pid <> pg_backend_pid() AND backend_type = 'client backend'"),
+            2)
+      << "the store's and the waiting store's sessions";
+  // The next allocation meets the dropped connection, reconnects, claims its station again and
+  // takes the next number: the locked and cancelled attempts consumed nothing.
+  EXPECT_EQ(store.allocate(counters, ShiftTable{}, ctx, test::render_sn()).serials.at("sn"), 2);
+  SerialStore second(open_postgres_store(server.url(), StoreAccess::existing), settings);
+  EXPECT_THROW(second.start_station(ctx), StoreError) << "the reconnected station holds its name again";
 }
 
 }  // namespace

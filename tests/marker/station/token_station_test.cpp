@@ -314,7 +314,12 @@ globalThis.document = {getElementById: el};
 const stored = {};
 globalThis.sessionStorage = {getItem: k => (k in stored ? stored[k] : null), setItem: (k, v) => { stored[k] = String(v); }};
 const realFetch = globalThis.fetch;
-globalThis.fetch = (path, options) => realFetch(base + path, options);
+let streaming = false;  // the page's /api/events answered: a part's end reaches it from now on
+globalThis.fetch = async (path, options) => {
+  const r = await realFetch(base + path, options);
+  if (path === "/api/events" && r.ok) streaming = true;
+  return r;
+};
 URL.createObjectURL = () => "blob:picture";
 URL.revokeObjectURL = () => {};
 setTimeout(() => { console.log("timeout " + JSON.stringify(els, ["id", "textContent", "hidden"])); process.exit(1); }, 15000);
@@ -325,7 +330,7 @@ const until = (what, check) => new Promise(done => {
   await until("login shown", () => !el("login").hidden);
   el("token").value = token;
   el("login").onsubmit({preventDefault() {}});
-  await until("idle shown", () => el("state").textContent === "idle" && el("picture").src === "blob:picture");
+  await until("idle shown", () => streaming && el("state").textContent === "idle" && el("picture").src === "blob:picture");
   el("mark").onclick();
   await until("part shown", () => el("last_outcome").textContent === "done");
   console.log("part " + el("last_id").textContent + " " + el("last_serials").textContent + " " + el("last_text").textContent);

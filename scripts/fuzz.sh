@@ -64,6 +64,7 @@ declare -A seeds=(
   [data_list]="$root/tests/fuzz/seeds/data_list/*"
   [code_data]="$root/tests/fuzz/code_data-seeds/*"
   [head_profile]="$root/tests/fuzz/head_profile-seeds/*.json"
+  [station_line]="$root/tests/fuzz/seeds/station_line/*"
   [station_http]="$root/tests/fuzz/seeds/station_http/*"
   [modbus_request]="$root/tests/fuzz/seeds/modbus_request/*"
 )

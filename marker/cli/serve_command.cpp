@@ -2,7 +2,7 @@
 //  [--store PATH|URL] [--station NAME] [--set NAME=VALUE …] [--create-counters] [--virtual-time]
 //  [--modbus HOST:PORT [--modbus-allow ADDR[/BITS] …]] [--max-connections N]
 //  [--trigger lmc-input:BIT] [--signal ready=B,busy=B,done=B,error=B] [--trigger-debounce-ms MS]
-//  [--trigger-min-pulse-ms MS]`: the marking station (docs/station.md). Loads the job once, keeps the
+//  [--trigger-min-pulse-ms MS] [--token FILE]`: the marking station (docs/station.md). Loads the job once, keeps the
 // device open and marks on command over the TCP line protocol and, with --http, over HTTP +
 // JSON, with --modbus over Modbus TCP (marker/station/). One log line per event on stderr. SIGTERM / Ctrl-C: a part in progress
 // is aborted with the laser off and recorded aborted (its numbers void), every connection is
@@ -24,6 +24,7 @@
 #include "marker/limits/station_settings.hpp"
 #include "marker/station/http_server.hpp"
 #include "marker/station/modbus_server.hpp"
+#include "marker/station/station_token.hpp"
 #include "marker/station/tcp_server.hpp"
 
 namespace mark::cli {
@@ -35,6 +36,7 @@ struct ServeArgs {
   std::string http;        // empty: no HTTP interface
   std::string modbus;      // empty: no Modbus interface
   std::vector<std::string> modbus_allow;
+  std::string token_file;  // empty: no token, loopback only
   int max_connections = 0;
   BoardIoArgs board_io;  // --trigger, --signal
 };
@@ -55,9 +57,10 @@ void log_line(const std::string& event) {
 }
 
 int serve(const ServeArgs& a) {
-  const ListenAddress address = parse_listen_address(a.listen, "--listen");
+  const std::string token = a.token_file.empty() ? std::string() : read_station_token(a.token_file, "--token");
+  const ListenAddress address = parse_listen_address(a.listen, "--listen", !token.empty());
   std::optional<ListenAddress> http_address;
-  if (!a.http.empty()) http_address = parse_listen_address(a.http, "--http");
+  if (!a.http.empty()) http_address = parse_listen_address(a.http, "--http", !token.empty());
   std::optional<ListenAddress> modbus_address;
   if (!a.modbus.empty()) modbus_address = parse_host_port(a.modbus, "--modbus");
   std::vector<AllowedNet> allow;
@@ -69,10 +72,10 @@ int serve(const ServeArgs& a) {
   Station station(source, log_line);
   std::unique_ptr<BoardIo> board_io;
   if (board_io_options) board_io = open_board_io(station, source.device(), *board_io_options, log_line);
-  TcpServer server(station, address, a.max_connections, log_line);
+  TcpServer server(station, address, a.max_connections, log_line, token);
   std::unique_ptr<HttpServer> http;
   if (http_address) {
-    http = std::make_unique<HttpServer>(station, *http_address, log_line);
+    http = std::make_unique<HttpServer>(station, *http_address, log_line, token);
     log_line("http on " + http_address->host + ":" + std::to_string(http->port()) + " (operator page: http://" +
              http_address->host + ":" + std::to_string(http->port()) + "/)");
   }
@@ -109,6 +112,7 @@ Command make_serve_command() {
         add_setting(*sub, kHttp, a->http);
         add_setting(*sub, kModbus, a->modbus);
         add_setting(*sub, kModbusAllow, a->modbus_allow);
+        add_setting(*sub, kToken, a->token_file);
         add_setting(*sub, kMaxConnections, a->max_connections);
         add_setting(*sub, kTrigger, a->board_io.trigger);
         add_setting(*sub, kSignal, a->board_io.signal);

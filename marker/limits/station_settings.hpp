@@ -8,10 +8,10 @@
 namespace mark {
 
 inline constexpr Text kListen{
-    {"--listen", "", "TCP line protocol on HOST:PORT, loopback only (port 0: a free one, logged)"},
+    {"--listen", "", "TCP line protocol on HOST:PORT, loopback only unless --token (port 0: a free one, logged)"},
     kStationListenDefault};
 inline constexpr Text kHttp{
-    {"--http", "", "HTTP + JSON, event stream and operator page on HOST:PORT, loopback only (port 0: a free one, logged)"},
+    {"--http", "", "HTTP + JSON, event stream and operator page on HOST:PORT, loopback only unless --token (port 0: a free one, logged)"},
     {},
     "off"};
 inline constexpr Text kModbus{
@@ -22,6 +22,10 @@ inline constexpr Text kModbusAllow{
     {"--modbus-allow", "", "--modbus: an IPv4 ADDR[/BITS] whose clients may connect (repeatable); others are closed unread"},
     {},
     "127.0.0.1 only (loopback when no list)"};
+inline constexpr Text kToken{
+    {"--token", "", "a file (mode 600) whose first line is the token every TCP session (AUTH) and HTTP API request (Bearer) must give; allows any --listen/--http address"},
+    {},
+    "none (loopback only, no authentication)"};
 inline constexpr Count kMaxConnections{
     {"--max-connections", "", "TCP clients at a time, and Modbus clients (one more gets ERR toomany / is closed)"}, {1, 64}, 8};
 
@@ -43,7 +47,7 @@ inline constexpr Quantity kTriggerMinPulse{
     {0, 1000, "ms"},
     5};
 
-inline constexpr SettingRef kStationSettingList[] = {&kListen,  &kHttp,   &kModbus,          &kModbusAllow,     &kMaxConnections,
+inline constexpr SettingRef kStationSettingList[] = {&kListen,  &kHttp,   &kModbus,          &kModbusAllow, &kToken, &kMaxConnections,
                                                      &kTrigger, &kSignal, &kTriggerDebounce, &kTriggerMinPulse};
 inline constexpr SettingTable kStationSettings{"station", "Station", "", kStationSettingList};
 

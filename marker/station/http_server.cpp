@@ -2,7 +2,10 @@
 
 #include <sys/socket.h>
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
+#include <optional>
 #include <thread>
 
 #include "base/error.hpp"
@@ -10,6 +13,7 @@
 #include "marker/station/event_stream.hpp"
 #include "marker/station/operator_page.hpp"
 #include "marker/station/station_json.hpp"
+#include "marker/station/station_token.hpp"
 #include "marker/store/audit_format.hpp"
 // Last: it brings <resolv.h>, whose `_res` macro breaks Eigen's headers included after it.
 #include <httplib.h>
@@ -46,6 +50,24 @@ bool empty_body(const std::string& body) {
   if (body.find_first_not_of(" \t\r\n") == std::string::npos) return true;
   const json j = json::parse(body, nullptr, false);
   return j.is_object() && j.empty();
+}
+
+// Why a request is refused without the right `Authorization: Bearer <token>`; nullopt: it may
+// run. The reason never echoes what was given.
+std::optional<std::string> bearer_refusal(const httplib::Request& req, const std::string& token) {
+  if (!req.has_header("Authorization"))
+    return "this station needs a token: send Authorization: Bearer <token> (marker serve --token)";
+  const std::string header = req.get_header_value("Authorization");
+  constexpr std::string_view kScheme = "Bearer ";
+  if (header.size() < kScheme.size() || !std::equal(kScheme.begin(), kScheme.end(), header.begin(), [](char a, char b) {
+        return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+      }))
+    return "the Authorization header must be Bearer <token>";
+  std::string_view given(header);
+  given.remove_prefix(kScheme.size());
+  while (!given.empty() && given.front() == ' ') given.remove_prefix(1);
+  if (!token_matches(token, given)) return "wrong token";
+  return std::nullopt;
 }
 
 }  // namespace
@@ -198,7 +220,8 @@ void HttpServer::Impl::stream_events(httplib::Response& res) {
       [open = open_streams](bool) { --*open; });
 }
 
-HttpServer::HttpServer(Station& station, const ListenAddress& address, std::function<void(const std::string&)> log)
+HttpServer::HttpServer(Station& station, const ListenAddress& address, std::function<void(const std::string&)> log,
+                       std::string token)
     : impl_(std::make_unique<Impl>(station, std::move(log))) {
   Impl& d = *impl_;
   d.server.new_task_queue = [] { return new httplib::ThreadPool(kHttpThreads); };
@@ -214,7 +237,19 @@ HttpServer::HttpServer(Station& station, const ListenAddress& address, std::func
   // HTTP/1.1 (RFC 9112 §6.3): a request with neither Content-Length nor Transfer-Encoding has
   // an empty body. cpp-httplib 0.11 reads such a POST to the connection's end instead (`curl -X
   // POST` waits 5 s, then 400): say so before it reads.
-  d.server.set_pre_routing_handler([](const httplib::Request& req, httplib::Response&) {
+  // The token is checked here, before the body is read and before any route runs.
+  d.server.set_pre_routing_handler([token = std::move(token), log = d.log](const httplib::Request& req,
+                                                                           httplib::Response& res) {
+    if (!token.empty() && req.path.rfind("/api/", 0) == 0) {
+      const std::optional<std::string> why = bearer_refusal(req, token);
+      if (why) {
+        res.set_header("WWW-Authenticate", "Bearer");
+        res.set_header("Connection", "close");  // the body, if any, is not read
+        reply(res, 401, {{"error", *why}});
+        if (log) log("http auth: " + req.remote_addr + ": " + req.method + " " + req.path.substr(0, 128) + " refused: " + *why);
+        return httplib::Server::HandlerResponse::Handled;
+      }
+    }
     if (!req.has_header("Content-Length") && !req.has_header("Transfer-Encoding"))
       const_cast<httplib::Request&>(req).headers.emplace("Content-Length", "0");
     return httplib::Server::HandlerResponse::Unhandled;

@@ -19,8 +19,11 @@ inline constexpr std::size_t kHttpBodyMax = 64 * 1024;
 class HttpServer {
  public:
   // Binds now (throws InputError naming `--http` and the address when it cannot) and serves on
-  // threads of its own until stop(). `station` outlives the server.
-  HttpServer(Station& station, const ListenAddress& address, std::function<void(const std::string&)> log = {});
+  // threads of its own until stop(). `station` outlives the server. A non-empty `token`
+  // (station_token.hpp): every /api/ request must carry `Authorization: Bearer <token>`, or it
+  // gets 401 and nothing runs; the operator page (static, no data) is served to anyone.
+  HttpServer(Station& station, const ListenAddress& address, std::function<void(const std::string&)> log = {},
+             std::string token = {});
   ~HttpServer();  // stop()
   HttpServer(const HttpServer&) = delete;
   HttpServer& operator=(const HttpServer&) = delete;

@@ -6,6 +6,11 @@ namespace mark {
 // event arrives; the buttons POST to the same endpoints an MES uses. The next part's picture
 // (/api/preview.png) is fetched again whenever the next part's job or text changes (a part
 // ended, a SET, another job loaded).
+// The page itself holds no data, so it is served without a token (marker serve --token): every
+// request its script makes goes through fetch() with `Authorization: Bearer` once the operator
+// typed the token (asked for on the first 401, kept in sessionStorage: gone with the tab).
+// EventSource cannot send that header, so the event stream is read with fetch() and a stream
+// reader too — one code path with and without a token — and the picture is fetched as a blob.
 std::string_view operator_page_html() {
   static constexpr std::string_view kPage = R"html(<!doctype html>
 <html lang="en"><head><meta charset="utf-8"><title>marker station</title>
@@ -24,6 +29,8 @@ table{border-collapse:collapse}td,th{padding:.1em .8em .1em 0;text-align:left}
 <div>State: <span id="state">…</span> &nbsp; job <code id="job"></code></div>
 <p><button id="mark">Mark</button><button id="abort">Abort</button><button id="pause">Pause</button><button id="reset">Reset</button></p>
 <p id="message"></p>
+<form id="login" hidden>This station needs its token: <input id="token" type="password" autocomplete="current-password" size="40">
+<button type="submit">Use token</button></form>
 <h2>Next mark</h2><pre id="next">…</pre>
 <img id="picture" alt="the next part as the simulated scanner marks it">
 <h2>Last part</h2>
@@ -38,11 +45,33 @@ table{border-collapse:collapse}td,th{padding:.1em .8em .1em 0;text-align:left}
 <script>
 "use strict";
 const $ = id => document.getElementById(id);
+// The token the operator typed (marker serve --token), for this tab only.
+function headers() {
+  const t = sessionStorage.getItem("marker-token");
+  return t ? {"Authorization": "Bearer " + t} : {};
+}
+function needToken() {
+  $("login").hidden = false;
+  $("message").textContent = "this station needs its token";
+}
+async function call(method, path) {
+  const r = await fetch(path, {method, headers: headers()});
+  if (r.status === 401) needToken();
+  return r;
+}
 async function api(method, path) {
-  const r = await fetch(path, {method});
+  const r = await call(method, path);
   let body = {};
   try { body = await r.json(); } catch (e) {}
   return {ok: r.ok, status: r.status, body};
+}
+let pictureUrl = null;
+async function showPicture() {
+  const r = await call("GET", "/api/preview.png");
+  if (!r.ok) return;
+  if (pictureUrl) URL.revokeObjectURL(pictureUrl);
+  pictureUrl = URL.createObjectURL(await r.blob());
+  $("picture").src = pictureUrl;
 }
 function showPart(p) {
   if (!p) return;
@@ -70,7 +99,7 @@ async function refresh() {
     const drawn = s.body.job + "\n" + (n.ok ? n.body.text : "");
     if (n.ok && drawn !== shownPicture) {
       shownPicture = drawn;
-      $("picture").src = "/api/preview.png?t=" + Date.now();  // a new URL: never a cached picture
+      showPicture();
     }
     const l = await api("GET", "/api/log?limit=50");
     if (l.ok) showLog(l.body);
@@ -95,15 +124,55 @@ $("mark").onclick = () => command("/api/mark?async=1");
 $("abort").onclick = () => command("/api/abort");
 $("reset").onclick = () => command("/api/reset");
 $("pause").onclick = () => command($("pause").textContent === "Resume" ? "/api/resume" : "/api/pause");
-const events = new EventSource("/api/events");
-events.onmessage = m => {
-  const e = JSON.parse(m.data);
+function onEvent(e) {
   $("state").textContent = e.state; $("state").className = e.state;
   if (e.part) showPart(e.part);
   if (e.state !== "marking") refresh();
+}
+// The server-sent events of /api/events, read as a stream: `data: JSON` blocks separated by a
+// blank line, comment lines (": ...") ignored. Reconnects 2 s after the stream ends, unless the
+// station wants a token the operator has not given yet (then the login form restarts it).
+let listening = false;
+async function listen() {
+  if (listening) return;
+  listening = true;
+  try {
+    const r = await call("GET", "/api/events");
+    if (r.status === 401) { listening = false; return; }
+    if (!r.ok || !r.body) throw new Error("HTTP " + r.status);
+    $("message").textContent = "";
+    refresh();
+    const reader = r.body.getReader();
+    const decoder = new TextDecoder();
+    let text = "";
+    for (;;) {
+      const {value, done} = await reader.read();
+      if (done) break;
+      text += decoder.decode(value, {stream: true});
+      for (let end; (end = text.indexOf("\n\n")) >= 0;) {
+        const block = text.slice(0, end);
+        text = text.slice(end + 2);
+        const data = block.split("\n").filter(l => l.startsWith("data: ")).map(l => l.slice(6)).join("\n");
+        if (data) onEvent(JSON.parse(data));
+      }
+    }
+  } catch (e) {
+    // the station stopped or the network went: reconnect below
+  }
+  listening = false;
+  $("message").textContent = "connection to the station lost; retrying";
+  setTimeout(listen, 2000);
+}
+$("login").onsubmit = ev => {
+  ev.preventDefault();
+  sessionStorage.setItem("marker-token", $("token").value.trim());
+  $("token").value = "";
+  $("login").hidden = true;
+  $("message").textContent = "";
+  listen();
+  refresh();
 };
-events.onerror = () => { $("message").textContent = "connection to the station lost; retrying"; };
-events.onopen = () => { $("message").textContent = ""; refresh(); };
+listen();
 refresh();
 </script></body></html>
 )html";

@@ -12,6 +12,8 @@
 
 #include "base/error.hpp"
 #include "marker/limits/station_limits.hpp"
+#include "marker/station/line_auth.hpp"
+#include "marker/station/peer_allow.hpp"
 #include "marker/station/station_commands.hpp"
 
 namespace mark {
@@ -33,14 +35,15 @@ ListenAddress parse_host_port(const std::string& text, const std::string& option
   return a;
 }
 
-ListenAddress parse_listen_address(const std::string& text, const std::string& option) {
+ListenAddress parse_listen_address(const std::string& text, const std::string& option, bool token_set) {
   ListenAddress a = parse_host_port(text, option);
+  if (token_set) return a;
   in_addr addr{};
   ::inet_pton(AF_INET, a.host.c_str(), &addr);
   if ((ntohl(addr.s_addr) >> 24) != 127)
     throw InputError(option + " " + text +
-                     ": only loopback addresses (127.0.0.0/8) for now: the station has no authentication yet, "
-                     "and a command that fires a laser must not come unauthenticated from the network");
+                     ": only loopback addresses (127.0.0.0/8) for a station without a token: give --token FILE to "
+                     "listen beyond loopback (a command that fires a laser must not come unauthenticated from the network)");
   return a;
 }
 
@@ -62,8 +65,8 @@ bool send_line(int fd, std::string line) {
 }  // namespace
 
 TcpServer::TcpServer(Station& station, const ListenAddress& address, int max_connections,
-                     std::function<void(const std::string&)> log)
-    : station_(station), max_connections_(max_connections), log_(std::move(log)) {
+                     std::function<void(const std::string&)> log, std::string token)
+    : station_(station), max_connections_(max_connections), log_(std::move(log)), token_(std::move(token)) {
   const std::string where = address.host + ":" + std::to_string(address.port);
   listen_fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
   if (listen_fd_ < 0) throw InputError("--listen " + where + ": " + std::strerror(errno));
@@ -91,7 +94,9 @@ void TcpServer::serve(const std::function<bool()>& stop) {
     const int r = ::poll(&p, 1, 50);
     reap();
     if (r <= 0 || !(p.revents & POLLIN)) continue;
-    const int fd = ::accept4(listen_fd_, nullptr, nullptr, SOCK_CLOEXEC);
+    sockaddr_in peer{};
+    socklen_t peer_len = sizeof peer;
+    const int fd = ::accept4(listen_fd_, reinterpret_cast<sockaddr*>(&peer), &peer_len, SOCK_CLOEXEC);
     if (fd < 0) continue;
     std::lock_guard lock(mutex_);
     if (static_cast<int>(connections_.size()) >= max_connections_) {
@@ -103,6 +108,7 @@ void TcpServer::serve(const std::function<bool()>& stop) {
     }
     auto c = std::make_unique<Connection>();
     c->fd = fd;
+    c->peer = dotted(ntohl(peer.sin_addr.s_addr)) + ":" + std::to_string(ntohs(peer.sin_port));
     Connection& ref = *c;
     connections_.push_back(std::move(c));
     ref.thread = std::thread([this, &ref] { converse(ref); });
@@ -111,6 +117,7 @@ void TcpServer::serve(const std::function<bool()>& stop) {
 }
 
 void TcpServer::converse(Connection& c) {
+  LineAuth auth(token_);
   std::string buffer;
   bool skipping = false;  // the rest of an overlong line
   char chunk[1024];
@@ -127,7 +134,9 @@ void TcpServer::converse(Connection& c) {
         skipping = false;
         continue;
       }
-      open = send_line(c.fd, station_command(station_, line));
+      const LineAuth::Verdict v = auth.check(line);
+      if (!v.log.empty()) log("auth: " + c.peer + ": " + v.log);
+      open = send_line(c.fd, v.handled ? v.reply : station_command(station_, line)) && !v.close;
     }
     if (!open) break;
     if (!skipping && buffer.size() >= kStationLineMax) {

@@ -16,25 +16,27 @@
 
 namespace mark {
 
-// An address to listen on, loopback only until the station has authentication: a station that
-// can fire a laser must not take commands from the network unauthenticated.
+// An address to listen on, loopback only unless the station has a token (--token): a station
+// that can fire a laser must not take commands from the network unauthenticated.
 struct ListenAddress {
-  std::string host;  // dotted IPv4, 127.x.x.x
+  std::string host;  // dotted IPv4 (127.x.x.x without a token)
   int port = 0;      // 0: a free port (the server says which)
 };
 
 // "127.0.0.1:5555", "localhost:0", ":5555" (127.0.0.1). Throws InputError naming `option`, for a
-// malformed address, a port outside 0–65535, or an address that is not loopback.
-ListenAddress parse_listen_address(const std::string& text, const std::string& option);
+// malformed address, a port outside 0–65535, or, unless `token_set`, an address that is not
+// loopback.
+ListenAddress parse_listen_address(const std::string& text, const std::string& option, bool token_set = false);
 // The same for any IPv4 address (0.0.0.0, a plant network's): for an interface that guards
 // its peers otherwise (Modbus's --modbus-allow).
 ListenAddress parse_host_port(const std::string& text, const std::string& option);
 
 class TcpServer {
  public:
-  // Binds and listens now (throws InputError naming the address when it cannot).
+  // Binds and listens now (throws InputError naming the address when it cannot). A non-empty
+  // `token` (station_token.hpp): every session must AUTH first (line_auth.hpp).
   TcpServer(Station& station, const ListenAddress& address, int max_connections,
-            std::function<void(const std::string&)> log = {});
+            std::function<void(const std::string&)> log = {}, std::string token = {});
   ~TcpServer();  // stop()
   TcpServer(const TcpServer&) = delete;
   TcpServer& operator=(const TcpServer&) = delete;
@@ -49,6 +51,7 @@ class TcpServer {
  private:
   struct Connection {
     int fd = -1;
+    std::string peer;  // "ADDR:PORT", for the log
     std::thread thread;
     std::atomic<bool> done{false};
   };
@@ -61,6 +64,7 @@ class TcpServer {
   Station& station_;
   int max_connections_;
   std::function<void(const std::string&)> log_;
+  std::string token_;
   int listen_fd_ = -1;
   int port_ = 0;
   std::mutex mutex_;

@@ -285,7 +285,8 @@ TEST(StationHttp, OperatorPageIsServedAndItsScriptParses) {
   EXPECT_EQ(page->get_header_value("Content-Type"), "text/html; charset=utf-8");
   const std::string& html = page->body;
   for (const char* id : {"id=\"state\"", "id=\"mark\"", "id=\"abort\"", "id=\"pause\"", "id=\"reset\"", "id=\"next\"",
-                         "id=\"last_text\"", "id=\"last_serials\"", "id=\"log\"", "new EventSource(\"/api/events\")"})
+                         "id=\"last_text\"", "id=\"last_serials\"", "id=\"log\"", "call(\"GET\", \"/api/events\")",
+                         "call(\"GET\", \"/api/preview.png\")", "id=\"token\"", "\"Authorization\": \"Bearer \" + t"})
     EXPECT_NE(html.find(id), std::string::npos) << id;
   EXPECT_EQ(html.find("http://"), std::string::npos);  // nothing fetched from elsewhere
   EXPECT_EQ(html.find("https://"), std::string::npos);
@@ -306,12 +307,14 @@ TEST(StationHttp, OperatorPageIsServedAndItsScriptParses) {
 }
 
 TEST(StationHttp, ListensOnLoopbackOnlyAndRefusesAPortInUse) {
+  EXPECT_EQ(parse_listen_address("192.168.1.5:8080", "--http", true).host, "192.168.1.5");  // with --token
   try {
     parse_listen_address("192.168.1.5:8080", "--http");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).substr(0, 68),
-              "--http 192.168.1.5:8080: only loopback addresses (127.0.0.0/8) for n");
+    EXPECT_EQ(std::string(e.what()).rfind(
+              "--http 192.168.1.5:8080: only loopback addresses (127.0.0.0/8) for a station without a token: give --token "
+              "FILE to listen beyond loopback", 0), 0u) << e.what();
   }
   Served s;
   try {

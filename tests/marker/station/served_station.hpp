@@ -88,8 +88,10 @@ struct Served {
   std::atomic<bool> stop{false};
   std::thread thread;
 
-  // `inject`: marker mark's --inject (fault@N: every part fails at sample N).
-  explicit Served(bool virtual_time = true, int max_connections = 8, const std::string& inject = {}) {
+  // `inject`: marker mark's --inject (fault@N: every part fails at sample N). `token`: marker
+  // serve --token's (empty: none), for the TCP and HTTP servers.
+  explicit Served(bool virtual_time = true, int max_connections = 8, const std::string& inject = {},
+                  const std::string& token = {}) {
     const std::string job = (dir / "line.json").string();
     std::ofstream(job) << kStationJob;
     cli::MarkJobArgs a;
@@ -102,8 +104,9 @@ struct Served {
     a.inject = inject;
     source = std::make_unique<cli::JobSource>(a);
     station = std::make_unique<Station>(*source);
-    server = std::make_unique<TcpServer>(*station, parse_listen_address("127.0.0.1:0", "--listen"), max_connections);
-    http = std::make_unique<HttpServer>(*station, parse_listen_address("127.0.0.1:0", "--http"));
+    server = std::make_unique<TcpServer>(*station, parse_listen_address("127.0.0.1:0", "--listen"), max_connections,
+                                         nullptr, token);
+    http = std::make_unique<HttpServer>(*station, parse_listen_address("127.0.0.1:0", "--http"), nullptr, token);
     modbus = std::make_unique<ModbusServer>(*station, parse_listen_address("127.0.0.1:0", "--modbus"),
                                             std::vector<AllowedNet>{}, max_connections);
     thread = std::thread([this] { server->serve([this] { return stop.load(); }); });

@@ -109,9 +109,13 @@ TEST(StationTcp, ListenRefusesNonLoopback) {
     parse_listen_address("0.0.0.0:5555", "--listen");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).substr(0, 64), "--listen 0.0.0.0:5555: only loopback addresses (127.0.0.0/8) for");
+    EXPECT_EQ(std::string(e.what()).rfind(
+              "--listen 0.0.0.0:5555: only loopback addresses (127.0.0.0/8) for a station without a token: give --token "
+              "FILE to listen beyond loopback", 0), 0u) << e.what();
   }
+  EXPECT_EQ(parse_listen_address("0.0.0.0:5555", "--listen", true).host, "0.0.0.0");  // with --token
   EXPECT_THROW(parse_listen_address("127.0.0.1:70000", "--listen"), InputError);
+  EXPECT_THROW(parse_listen_address("0.0.0.0:70000", "--listen", true), InputError);
   EXPECT_THROW(parse_listen_address("127.0.0.1", "--listen"), InputError);
 }
 

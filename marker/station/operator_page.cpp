@@ -137,8 +137,14 @@ async function listen() {
   if (listening) return;
   listening = true;
   try {
+    const asked = sessionStorage.getItem("marker-token");
     const r = await call("GET", "/api/events");
-    if (r.status === 401) { listening = false; return; }
+    if (r.status === 401) {
+      listening = false;
+      // A token typed while this request was out (the login's listen() found it listening): again.
+      if (sessionStorage.getItem("marker-token") !== asked) listen();
+      return;
+    }
     if (!r.ok || !r.body) throw new Error("HTTP " + r.status);
     $("message").textContent = "";
     refresh();

@@ -322,7 +322,12 @@ globalThis.fetch = async (path, options) => {
 };
 URL.createObjectURL = () => "blob:picture";
 URL.revokeObjectURL = () => {};
-setTimeout(() => { console.log("timeout " + JSON.stringify(els, ["id", "textContent", "hidden"])); process.exit(1); }, 15000);
+// Generous: under a loaded ctest -j2 the station's first preview picture alone took seconds.
+setTimeout(() => {
+  const shown = Object.fromEntries(Object.entries(els).map(([k, v]) => [k, {text: v.textContent, hidden: v.hidden, src: v.src}]));
+  console.log("timeout streaming=" + streaming + " " + JSON.stringify(shown));
+  process.exit(1);
+}, 60000);
 const until = (what, check) => new Promise(done => {
   const poll = setInterval(() => { if (check()) { clearInterval(poll); console.log(what); done(); } }, 20);
 });
@@ -351,7 +356,7 @@ TEST(StationHttpToken, OperatorPageScriptAsksForTheTokenThenMarks) {
   const auto dir = test::fresh_temp_dir("marker_page_token");
   const auto script = dir / "page.js";
   std::ofstream(script) << kPageHarness << html.substr(from + 8, to - from - 8);
-  const std::string command = "timeout 30 node " + script.string() + " http://127.0.0.1:" +
+  const std::string command = "timeout 90 node " + script.string() + " http://127.0.0.1:" +
                               std::to_string(s.http_port()) + " " + kToken + " 2>&1";
   FILE* p = ::popen(command.c_str(), "r");
   ASSERT_NE(p, nullptr);

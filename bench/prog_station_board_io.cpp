@@ -61,14 +61,7 @@ int main(int argc, char** argv) {
   std::ofstream(dir / "serial20.json") << kSerial20Job;
   std::vector<double> marking_ms, first_ms;
   {
-    mark::cli::MarkJobArgs a;
-    a.job = (dir / "serial20.json").string();
-    a.store.store = (dir / "bench.sqlite").string();
-    a.station = "bench";
-    a.create_counters = true;
-    a.virtual_time = !real_time;
-    a.device = "lmc-emulated";
-    mark::cli::JobSource source(a);
+    mark::cli::JobSource source(mark::bench::serial20_args(dir, real_time, "lmc-emulated"));
     mark::Station station(source);
     std::mutex m;
     std::condition_variable cv;

@@ -164,17 +164,6 @@ std::string check_store(const std::string& store, const LoadRun& run) {
   return "";
 }
 
-mark::cli::MarkJobArgs job_args(const std::filesystem::path& dir, bool real_time) {
-  mark::cli::MarkJobArgs a;
-  a.job = (dir / "serial20.json").string();
-  a.store.store = (dir / "bench.sqlite").string();
-  a.station = "bench";
-  a.create_counters = true;
-  a.virtual_time = !real_time;
-  a.device = "sim";
-  return a;
-}
-
 // The load run on a station of its own; prints its figures, 1 when the store disagrees.
 int report_load(const mark::cli::MarkJobArgs& a, int parts, int clients) {
   LoadRun run;
@@ -225,12 +214,12 @@ int main(int argc, char** argv) {
   std::vector<double> rtt_ms, first_ms, compile_ms, http_ms, status_ms, http_status_ms;
   double total_s = 0;
   if (clients > 1) {
-    const int code = report_load(job_args(dir, real_time), parts, clients);
+    const int code = report_load(mark::bench::serial20_args(dir, real_time, "sim"), parts, clients);
     std::filesystem::remove_all(dir);
     return code;
   }
   {
-    mark::cli::JobSource source(job_args(dir, real_time));
+    mark::cli::JobSource source(mark::bench::serial20_args(dir, real_time, "sim"));
     mark::Station station(source);
     mark::TcpServer server(station, mark::parse_listen_address("127.0.0.1:0", "--listen"), 8);
     std::atomic<bool> stop{false};

@@ -3,6 +3,7 @@
 // the sending side shut, and everything the server answered until it closed (5 s at most).
 #include <arpa/inet.h>
 #include <netinet/in.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <sys/time.h>
 #include <unistd.h>
@@ -42,19 +43,35 @@ inline std::string exchange_on_loopback(int port, const void* data, std::size_t 
   sa.sin_family = AF_INET;
   sa.sin_port = htons(static_cast<std::uint16_t>(port));
   ::inet_pton(AF_INET, "127.0.0.1", &sa.sin_addr);
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0) broken_errno("cannot connect to the server");
+  // libFuzzer's timer signal may interrupt a blocking call: a connect then goes on by itself
+  // (wait until the socket is writable and read its result), a send or recv is repeated.
+  if (::connect(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0) {
+    if (errno != EINTR) broken_errno("cannot connect to the server");
+    pollfd p{fd, POLLOUT, 0};
+    while (::poll(&p, 1, 5000) < 0 && errno == EINTR) {
+    }
+    int error = 0;
+    socklen_t len = sizeof error;
+    ::getsockopt(fd, SOL_SOCKET, SO_ERROR, &error, &len);
+    if (error != 0) {
+      errno = error;
+      broken_errno("cannot connect to the server");
+    }
+  }
   timeval tv{5, 0};
   ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
   const char* bytes = static_cast<const char*>(data);
   for (std::size_t sent = 0; sent < size;) {
     const ssize_t n = ::send(fd, bytes + sent, size - sent, MSG_NOSIGNAL);
+    if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;  // the server closed early (a bad frame, a body over the limit): its answer is read below
     sent += static_cast<std::size_t>(n);
   }
   ::shutdown(fd, SHUT_WR);
   std::string reply;
   char chunk[4096];
-  for (ssize_t n; (n = ::recv(fd, chunk, sizeof chunk, 0)) > 0;) reply.append(chunk, static_cast<std::size_t>(n));
+  for (ssize_t n; (n = ::recv(fd, chunk, sizeof chunk, 0)) > 0 || (n < 0 && errno == EINTR);)
+    if (n > 0) reply.append(chunk, static_cast<std::size_t>(n));
   ::close(fd);
   return reply;
 }

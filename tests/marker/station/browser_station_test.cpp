@@ -99,5 +99,36 @@ TEST(StationBrowser, OperatorPageMarksAPartInHeadlessChromium) {
   std::filesystem::remove_all(dir);
 }
 
+// With `--token`: the page shows its login on the first 401, the operator types the token into
+// the password field and submits the form; the page then shows the station and marks a part.
+TEST(StationBrowser, OperatorPageAsksForTheTokenInHeadlessChromium) {
+  if (!test::browser_installed()) GTEST_SKIP() << "chromium and chromium-driver (Debian) are not installed";
+  constexpr const char* kToken = "Hc7pW2qZ9vKx4Lm8Rt3N";
+  Served s(true, 8, {}, kToken);
+  const auto dir = test::fresh_temp_dir("marker_browser_token");
+  {
+    WebDriverSession b(dir / "chromedriver.log", kWidth, kHeight);
+    b.navigate("http://127.0.0.1:" + std::to_string(s.http_port()) + "/");
+    ASSERT_TRUE(b.wait_for("!document.getElementById('login').hidden", 30s)) << b.log_text();
+    EXPECT_EQ(shown(b, "message"), "this station needs its token");
+    EXPECT_EQ(shown(b, "state"), "…");  // nothing of the station shown without the token
+
+    b.type("#token", kToken);
+    b.click("#login button[type=submit]");
+    ASSERT_TRUE(b.wait_for("document.getElementById('state').textContent === 'idle' && "
+                           "document.getElementById('next').textContent === 'SN 000041 LOT A00'",
+                           30s))
+        << "state " << shown(b, "state") << ", message " << shown(b, "message");
+    EXPECT_EQ(b.run("return document.getElementById('token').value;").get<std::string>(), "");  // not left in the form
+
+    b.click("#mark");
+    ASSERT_TRUE(b.wait_for("document.getElementById('last_outcome').textContent === 'done'", 60s))
+        << "outcome " << shown(b, "last_outcome") << ", message " << shown(b, "message");
+    EXPECT_EQ(shown(b, "last_text"), "SN 000041 LOT A00");
+  }
+  test::expect_one_part(s.close(), 2, 41, Outcome::done, "SN 000041 LOT A00");
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace mark

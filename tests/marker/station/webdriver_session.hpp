@@ -120,10 +120,10 @@ class WebDriverSession {
   // Runs `script` (a function body: `return ...;`) in the page and gives its value.
   json run(const std::string& script) { return command("POST", "/execute/sync", {{"script", script}, {"args", json::array()}}); }
   // Clicks the element the CSS selector finds, as a user would (WebDriver moves the pointer there).
-  void click(const std::string& css) {
-    const json element = command("POST", "/element", {{"using", "css selector"}, {"value", css}});
-    const std::string id = element.begin().value().get<std::string>();
-    command("POST", "/element/" + id + "/click", json::object());
+  void click(const std::string& css) { command("POST", "/element/" + element(css) + "/click", json::object()); }
+  // Types `text` into the element the CSS selector finds, as key strokes.
+  void type(const std::string& css, const std::string& text) {
+    command("POST", "/element/" + element(css) + "/value", {{"text", text}});
   }
   // The viewport as PNG bytes.
   std::string screenshot() { return base64_decode(command("GET", "/screenshot", nullptr).get<std::string>()); }
@@ -144,6 +144,10 @@ class WebDriverSession {
   }
 
  private:
+  // The WebDriver id of the element the CSS selector finds (the value of its one key).
+  std::string element(const std::string& css) {
+    return command("POST", "/element", {{"using", "css selector"}, {"value", css}}).begin().value().get<std::string>();
+  }
   json command(const std::string& method, const std::string& path, const json& body) {
     return call(method, "/session/" + session_ + path, body);
   }

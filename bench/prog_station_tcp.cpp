@@ -17,8 +17,8 @@
 //
 // Prints per MARK: the round trip (client's send to the reply line), and trigger to first
 // sample: the client's send to the drain's first block to the device (DrainStats first_write, on
-// the same steady clock: the durable serial commit, the compile and begin_job are in it); then
-// marks per second. Virtual time by default (the drain as fast as the scanner takes samples; the
+// the same steady clock: the durable serial commit, the compile and begin_job are in it), broken
+// down (station_bench.hpp TriggerSteps); then marks per second. Virtual time by default (the drain as fast as the scanner takes samples; the
 // simulator's dose and quality figures after each part stay in the round trip and marks/s).
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -211,11 +211,8 @@ int main(int argc, char** argv) {
   const auto dir = std::filesystem::temp_directory_path() / ("station-bench-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "serial20.json") << kSerial20Job;
-  std::vector<double> rtt_ms, first_ms, compile_ms, http_ms, status_ms, http_status_ms;
-  // trigger → first sample in its steps (PartResult::times): the adapter to mark_next, the
-  // allocation's compile, the rest of the allocation (the store transaction and its durable
-  // commit), and the commit to the first block (begin_job, the stream's start).
-  std::vector<double> to_runner_ms, part_compile_ms, commit_ms, to_device_ms;
+  std::vector<double> rtt_ms, compile_ms, http_ms, status_ms, http_status_ms;
+  mark::bench::TriggerSteps first;
   double total_s = 0;
   if (clients > 1) {
     const int code = report_load(mark::bench::serial20_args(dir, real_time, "sim"), parts, clients);
@@ -252,14 +249,8 @@ int main(int argc, char** argv) {
       const auto last = station.status().last;
       const auto& r = last->objects.at(0).result;
       rtt_ms.push_back(rtt);
-      const auto between = [](auto from, auto to) { return std::chrono::duration<double, std::milli>(to - from).count(); };
-      first_ms.push_back(between(t0, r.drain.first_write));
+      first.add(t0, *last, r.drain.first_write);
       compile_ms.push_back(1e3 * r.compile_time_s);
-      const mark::PartTimes& times = last->times;
-      to_runner_ms.push_back(between(t0, times.started));
-      part_compile_ms.push_back(1e3 * times.compile_s);
-      commit_ms.push_back(between(times.started, times.committed) - 1e3 * times.compile_s);
-      to_device_ms.push_back(between(times.committed, r.drain.first_write));
       if (!client) continue;
       t0 = std::chrono::steady_clock::now();
       const auto h = client->Post("/api/mark");
@@ -289,12 +280,8 @@ int main(int argc, char** argv) {
   std::printf("station_tcp: %d parts (%s), 20-character serial \"SN 00000000000000001\"\n", parts,
               real_time ? "real time" : "virtual time");
   print("MARK round trip", rtt_ms);
-  print("trigger to first sample", first_ms, "  (the client's send to the device's first block)");
-  print("of which to the runner", to_runner_ms, "  (the line read, parsed, the station's lock, mark_next)");
-  print("of which the compile", part_compile_ms, "  (inside the allocation: render, layout, plan)");
-  print("of which the store", commit_ms, "  (the allocation's transaction and durable commit, less the compile)");
-  print("of which to the device", to_device_ms, "  (the commit to the first block: begin_job, the stream's start)");
-  print("first sample in memory", compile_ms, "  (JobResult compile_time_s: the compiled job to its first block in the line memory)");
+  first.print("the client's send to the device's first block");
+  print("first block in memory", compile_ms, "  (JobResult compile_time_s: the compiled job to its first block in the line memory)");
   std::printf("  marks per second           %.1f%s\n", (http ? 2 : 1) * parts / total_s, http ? " (TCP and HTTP)" : "");
   if (!http) return 0;
   print("POST /api/mark round trip", http_ms, "  (alternating with MARK)");

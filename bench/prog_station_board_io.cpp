@@ -107,12 +107,7 @@ int main(int argc, char** argv) {
         return 1;
       }
       marking_ms.push_back(ms(marked - t0));
-      std::optional<Clock::time_point> executed;  // this part's ExecuteList on the board
-      for (const mark::lmc::WireRecord& w : board.wire())
-        if (!w.packet && w.single.opcode() == static_cast<std::uint16_t>(mark::lmc::Op::ExecuteList) && w.arrived >= t0) {
-          executed = w.arrived;
-          break;
-        }
+      const auto executed = mark::bench::board_first_sample(board, t0);
       if (!executed || *executed > end) {
         std::fprintf(stderr, "station_board_io: part %d: no ExecuteList reached the board\n", i + 1);
         return 1;

@@ -7,9 +7,11 @@
 #include <cstddef>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "marker/cli/emulated_lmc_device.hpp"
 #include "marker/cli/mark_job.hpp"
 #include "marker/production/part_run.hpp"
 
@@ -39,6 +41,17 @@ inline cli::MarkJobArgs serial20_args(const std::filesystem::path& dir, bool rea
 inline double quantile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
   return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
+}
+
+// The board's first sample of a part triggered at `trigger`: when ExecuteList reached the
+// emulated board (it runs nothing of its list before: driver/lmc/session.cpp), on the steady
+// clock (WireRecord::arrived); nothing when none came after `trigger`.
+inline std::optional<std::chrono::steady_clock::time_point> board_first_sample(
+    const lmc::EmulatedBoard& board, std::chrono::steady_clock::time_point trigger) {
+  for (const lmc::WireRecord& w : board.wire())
+    if (!w.packet && w.single.opcode() == static_cast<std::uint16_t>(lmc::Op::ExecuteList) && w.arrived >= trigger)
+      return w.arrived;
+  return std::nullopt;
 }
 
 // Trigger to first sample, part by part, and where it went (PartResult::times, all on the

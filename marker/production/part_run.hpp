@@ -48,7 +48,7 @@ struct ObjectRun {
 // Where a part's start goes, on the steady clock (the drain's DrainStats::first_write is on it
 // too): trigger-to-first-sample broken down (bench/prog_station_tcp.cpp).
 struct PartTimes {
-  std::chrono::steady_clock::time_point started{};    // mark_next / remark called
+  std::chrono::steady_clock::time_point started{};    // mark_next called (a re-mark leaves these unset)
   std::chrono::steady_clock::time_point committed{};  // the allocation committed durably
   double compile_s = 0;  // inside the allocation: rendering, layout, planning (and any require check)
 };

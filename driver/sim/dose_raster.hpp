@@ -24,10 +24,15 @@ class DoseRaster {
   // production part whose objects the scanner marked as separate jobs, each clearing its own.
   void add(const DoseRaster& other);
 
-  // Allocate every tile within margin_mm of the polyline now, so later deposits there do not
+  // Allocate every tile within margin_mm of the polylines now, so later deposits there do not
   // allocate (the simulator sizes its raster before the first sample of a job).
-  void reserve_along(const std::vector<Vec2>& polyline, double margin_mm);
+  void reserve_along(const std::vector<std::vector<Vec2>>& polylines, double margin_mm);
   std::size_t tiles() const { return tiles_.size(); }
+  // Empties the raster for the next job and keeps up to kSpareTiles of its tiles for reuse: the
+  // next job's reserve_along then zeroes memory it already owns instead of asking for fresh pages
+  // (a station's trigger waits for it before the first sample).
+  void clear();
+  static constexpr std::size_t kSpareTiles = 4096;  // 64 MiB of 64 × 64 floats
 
   // Dose of pixel (ix, iy); pixel (ix, iy) is centred on (ix·pixel, iy·pixel) mm.
   double pixel(std::int64_t ix, std::int64_t iy) const;
@@ -53,14 +58,21 @@ class DoseRaster {
  private:
   struct Tile {
     std::vector<float> dose = std::vector<float>(tile_size * tile_size, 0.0f);
+    // Still holds an earlier job's values (a spare reserved again): reads as zero, and is zeroed
+    // on its first deposit. Most reserved tiles lie in the margin and are never deposited in, so
+    // the job's start does not wait to zero them.
+    bool stale = false;
   };
   static std::uint64_t key(std::int64_t tx, std::int64_t ty);
+  std::unique_ptr<Tile> new_tile();  // from the spares (stale) when there are any, else a fresh zeroed one
+  static void freshen(Tile& t);      // zeroes a stale tile before its first deposit
   float* pixel_ref(std::int64_t ix, std::int64_t iy);           // allocates
   const float* find_pixel(std::int64_t ix, std::int64_t iy) const;  // nullptr if absent
 
   double pixel_mm_;
   double total_ = 0;
   std::unordered_map<std::uint64_t, std::unique_ptr<Tile>> tiles_;
+  std::vector<std::unique_ptr<Tile>> spare_;  // tiles of earlier jobs (clear()), not zeroed
   // one-tile cache: consecutive deposits almost always hit the same tile
   std::uint64_t cached_key_ = 0;  // meaningful only while cached_tile_ is set
   Tile* cached_tile_ = nullptr;

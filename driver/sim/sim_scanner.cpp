@@ -84,7 +84,7 @@ DeviceDescription SimScanner::describe() const {
 
 void SimScanner::start_job() {
   trail_.flush();
-  dose_ = DoseRaster(options_.pixel_mm);
+  dose_.clear();
   lit_points_.clear();
   lit_starts_.clear();
   lit_.runs.clear();
@@ -125,10 +125,8 @@ void SimScanner::begin_job(const JobHeader& header) {
   // Size everything the drain thread will touch, so write() never allocates.
   const double margin = dose_margin_mm(header, servo_, options_.plant);
   double lit_length = 0;
-  for (const auto& line : header.lit_paths) {
-    dose_.reserve_along(line, margin);
-    lit_length += polyline_length(line);
-  }
+  dose_.reserve_along(header.lit_paths, margin);
+  for (const auto& line : header.lit_paths) lit_length += polyline_length(line);
   if (options_.record_lit_paths) {
     // A point is kept every lit_path_spacing along the beam plus the ends of each run; the lit
     // beam path is about as long as the planned one. Twice that, and runs for flicker.

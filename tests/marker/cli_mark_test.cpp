@@ -174,3 +174,33 @@ TEST(CliMark, LaysOutAndPlansOncePerMark) {
 
 }  // namespace
 }  // namespace mark
+
+namespace mark {
+namespace {
+
+// Issue 24: the quality class sees the pulses. 2000 mm/s at 20 kHz puts them 100 µm apart on
+// the 40 µm spot — 60 µm of the centre line between spots (v / f − d) — so the mark is not
+// "high" whatever its geometry; at 100 kHz they are 20 µm apart, overlapping, and the same
+// mark is "high".
+TEST(CliMark, PulsesThatDoNotOverlapAreNotHigh) {
+  auto mark_at = [](const char* khz) {
+    const auto r = test::run_cli({"mark", "SN 1", "--height", "3", "--speed", "2000", "--frequency", khz,
+                                  "--virtual-time", "--json"});
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  const auto dotted = mark_at("20");
+  EXPECT_NE(dotted["quality"]["class"], "high");
+  EXPECT_NEAR(dotted["quality"]["pulse_gap_max_um"].get<double>(), 2000.0 / 20 - 40, 1.0);
+  EXPECT_TRUE(dotted["quality"]["separate_dots"].get<bool>());
+  const auto solid = mark_at("100");
+  EXPECT_EQ(solid["quality"]["class"], "high") << solid["quality"].dump();
+  EXPECT_DOUBLE_EQ(solid["quality"]["pulse_gap_max_um"].get<double>(), 0);
+  EXPECT_GT(solid["quality"]["dose_per_mm_fraction"].get<double>(), 0.8);
+  // The geometry is the same: only the pulses differ.
+  EXPECT_DOUBLE_EQ(dotted["quality"]["max_deviation_um"].get<double>(),
+                   solid["quality"]["max_deviation_um"].get<double>());
+}
+
+}  // namespace
+}  // namespace mark

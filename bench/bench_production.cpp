@@ -4,6 +4,8 @@
 // render, lay out and plan incrementally → mark on the simulated SL10 → quality figures →
 // record the outcome (a second transaction). Against it the pieces alone:
 //   BM_StoreOnly        allocation + outcome, no marking
+//   BM_StoreOnlyPostgres  the same on a private PostgreSQL server (a Unix socket, every commit
+//                         flushed to disk: fsync and synchronous_commit on, as a plant's server)
 //   BM_MarkOnly         compile + mark + quality, no store
 //   BM_MarkNoQuality    compile + mark, neither store nor quality figures
 //   BM_Part             everything (PartRunner::mark_next)
@@ -17,6 +19,7 @@
 #include "marker/production/part_run.hpp"
 #include "marker/store/digest.hpp"
 #include "marker/store/open_store.hpp"
+#include "tests/marker/store/postgres_server.hpp"
 
 namespace {
 
@@ -39,10 +42,11 @@ struct Line {
   MarkContext context;
   SimScanner scanner{simulator_options(object_spec(job, job.objects.front(), "", fonts))};
 
-  Line() {
+  // `store_url`: a PostgreSQL URL; empty: a SQLite file in `dir`.
+  explicit Line(const std::string& store_url = {}) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
-    store = open_store((dir / "bench.serials.sqlite").string(), StoreAccess::create);
+    store = open_store(store_url.empty() ? (dir / "bench.serials.sqlite").string() : store_url, StoreAccess::create);
     context.station = "bench";
     context.job = "bench.json";
     context.job_sha256 = sha256_hex(kJob);
@@ -63,8 +67,7 @@ void rate(benchmark::State& state, double device_s) {
     state.counters["device_s_per_part"] = device_s / static_cast<double>(state.iterations());
 }
 
-void BM_StoreOnly(benchmark::State& state) {
-  Line line;
+void store_parts(benchmark::State& state, Line& line) {
   const auto counters = line.job.used_counters();
   for (auto _ : state) {
     line.context.now = SystemClock().now();
@@ -78,7 +81,24 @@ void BM_StoreOnly(benchmark::State& state) {
   }
   rate(state, 0);
 }
+
+void BM_StoreOnly(benchmark::State& state) {
+  Line line;
+  store_parts(state, line);
+}
+
+void BM_StoreOnlyPostgres(benchmark::State& state) {
+  const auto bin = test::PostgresServer::find_binaries();
+  if (bin.empty()) {
+    state.SkipWithError("no PostgreSQL server binaries (Debian postgresql) under /usr/lib/postgresql");
+    return;
+  }
+  test::PostgresServer server(bin, true);
+  Line line(server.url());
+  store_parts(state, line);
+}
 BENCHMARK(BM_StoreOnly)->Unit(benchmark::kMillisecond)->MinTime(2)->UseRealTime();
+BENCHMARK(BM_StoreOnlyPostgres)->Unit(benchmark::kMillisecond)->MinTime(2)->UseRealTime();
 
 void mark_only(benchmark::State& state, bool quality) {
   Line line;

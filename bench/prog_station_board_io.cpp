@@ -9,11 +9,11 @@
 //
 // Prints per part, median and p99:
 // - edge → marking: the pin set on the board to the station entering `marking` (the poll, the
-//   debounce and minimum pulse, mark_async) — measured directly;
-// - edge → first sample: the pin set to the part's end, minus the part's wall time from its first
-//   sample to its end (JobResult wall_time_s − compile_time_s): an upper bound (recording the
-//   outcome and the simulator's figures stay in it). station_tcp reads the drain's first block
-//   directly (DrainStats first_write); the LMC path sends command lists, with no drain.
+//   debounce and minimum pulse, mark_async);
+// - edge → first sample, station_tcp's definition on this board: the pin set to the board's
+//   first sample, which is when ExecuteList reaches it (the board runs nothing of its list
+//   before: driver/lmc/session.cpp), read off the board's wire record on the same steady clock
+//   (WireRecord::arrived); broken down as station_tcp's (station_bench.hpp TriggerSteps).
 // Before each part the pin is low for ten polls, so every edge is a fresh one.
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -38,7 +38,7 @@ using mark::bench::kSerial20Job;
 using mark::bench::quantile;
 
 void print(const char* what, const std::vector<double>& ms, const char* note = "") {
-  std::printf("  %-22s median %.3f ms  p99 %.3f ms%s\n", what, quantile(ms, 0.5), quantile(ms, 0.99), note);
+  std::printf("  %-26s median %.3f ms  p99 %.3f ms%s\n", what, quantile(ms, 0.5), quantile(ms, 0.99), note);
 }
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
@@ -59,7 +59,8 @@ int main(int argc, char** argv) {
   const auto dir = std::filesystem::temp_directory_path() / ("station-board-bench-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "serial20.json") << kSerial20Job;
-  std::vector<double> marking_ms, first_ms;
+  std::vector<double> marking_ms;
+  mark::bench::TriggerSteps first;
   {
     mark::cli::JobSource source(mark::bench::serial20_args(dir, real_time, "lmc-emulated"));
     mark::Station station(source);
@@ -105,9 +106,13 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "station_board_io: part %d did not end done\n", i + 1);
         return 1;
       }
-      const auto& r = last->objects.at(0).result;
       marking_ms.push_back(ms(marked - t0));
-      first_ms.push_back(ms(end - t0) - 1e3 * (r.wall_time_s - r.compile_time_s));
+      const auto executed = mark::bench::board_first_sample(board, t0);
+      if (!executed || *executed > end) {
+        std::fprintf(stderr, "station_board_io: part %d: no ExecuteList reached the board\n", i + 1);
+        return 1;
+      }
+      first.add(t0, *last, *executed);
     }
     if (io->triggers() != static_cast<std::uint64_t>(parts) || station.status().parts != static_cast<std::uint64_t>(parts)) {
       std::fprintf(stderr, "station_board_io: %llu triggers, %llu parts for %d edges\n",
@@ -122,6 +127,6 @@ int main(int argc, char** argv) {
               "polled every 1 ms\n",
               parts, real_time ? "real time" : "virtual time", debounce_ms, min_pulse_ms);
   print("edge to marking", marking_ms, "  (poll + debounce/min pulse + mark_async)");
-  print("edge to first sample", first_ms, "  (upper bound)");
+  first.print("the pin set to ExecuteList on the board");
   return 0;
 }

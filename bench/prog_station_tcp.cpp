@@ -3,7 +3,11 @@
 // folder, `marker serve`'s parts (JobSource → Station → TcpServer) in process, one client
 // sending MARK back to back.
 //
-//   station_tcp [--parts N] [--real-time] [--http] [--clients N]
+//   station_tcp [--parts N] [--real-time] [--http] [--clients N] [--device sim|lmc-emulated]
+//
+// --device lmc-emulated: the emulated LMC board instead of the simulated scanner (whose
+// begin_job sizes its dose raster for the part: the simulator's modelling, not the station's);
+// its first sample is ExecuteList reaching the board (station_bench.hpp board_first_sample).
 //
 // --http: an HttpServer on the same station too, and an httplib::Client (keep-alive) sending
 // POST /api/mark after each MARK, alternately, so both see the same store and machine load;
@@ -17,8 +21,8 @@
 //
 // Prints per MARK: the round trip (client's send to the reply line), and trigger to first
 // sample: the client's send to the drain's first block to the device (DrainStats first_write, on
-// the same steady clock: the durable serial commit, the compile and begin_job are in it); then
-// marks per second. Virtual time by default (the drain as fast as the scanner takes samples; the
+// the same steady clock: the durable serial commit, the compile and begin_job are in it), broken
+// down (station_bench.hpp TriggerSteps); then marks per second. Virtual time by default (the drain as fast as the scanner takes samples; the
 // simulator's dose and quality figures after each part stay in the round trip and marks/s).
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -204,6 +208,8 @@ int main(int argc, char** argv) {
   app.add_flag("--real-time", real_time, "drain at the scanner's clock (default: virtual time)");
   int clients = 1;
   app.add_option("--clients", clients, "concurrent clients: more than 1 is the load run")->check(CLI::Range(1, 8));
+  std::string device = "sim";
+  app.add_option("--device", device, "the device the station marks on")->check(CLI::IsMember({"sim", "lmc-emulated"}));
   bool http = false;
   app.add_flag("--http", http, "also POST /api/mark after each MARK, and STATUS against GET /api/status");
   CLI11_PARSE(app, argc, argv);
@@ -211,21 +217,25 @@ int main(int argc, char** argv) {
   const auto dir = std::filesystem::temp_directory_path() / ("station-bench-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "serial20.json") << kSerial20Job;
-  std::vector<double> rtt_ms, first_ms, compile_ms, http_ms, status_ms, http_status_ms;
+  std::vector<double> rtt_ms, compile_ms, http_ms, status_ms, http_status_ms;
+  mark::bench::TriggerSteps first;
   double total_s = 0;
   if (clients > 1) {
-    const int code = report_load(mark::bench::serial20_args(dir, real_time, "sim"), parts, clients);
+    const int code = report_load(mark::bench::serial20_args(dir, real_time, device), parts, clients);
     std::filesystem::remove_all(dir);
     return code;
   }
   {
-    mark::cli::JobSource source(mark::bench::serial20_args(dir, real_time, "sim"));
+    mark::cli::JobSource source(mark::bench::serial20_args(dir, real_time, device));
     mark::Station station(source);
     mark::TcpServer server(station, mark::parse_listen_address("127.0.0.1:0", "--listen"), 8);
     std::atomic<bool> stop{false};
     std::thread serving([&] { server.serve([&] { return stop.load(); }); });
     const int fd = connect_loopback(server.port());
     if (fd < 0) return 1;
+    const mark::lmc::EmulatedBoard* board = nullptr;
+    if (device == "lmc-emulated")
+      board = &dynamic_cast<mark::cli::EmulatedLmcDevice&>(source.device()).emulated_board();
     std::unique_ptr<mark::HttpServer> http_server;
     std::unique_ptr<httplib::Client> client;
     if (http) {
@@ -248,7 +258,12 @@ int main(int argc, char** argv) {
       const auto last = station.status().last;
       const auto& r = last->objects.at(0).result;
       rtt_ms.push_back(rtt);
-      first_ms.push_back(std::chrono::duration<double, std::milli>(r.drain.first_write - t0).count());
+      const auto first_sample = board ? mark::bench::board_first_sample(*board, t0) : r.drain.first_write;
+      if (!first_sample) {
+        std::fprintf(stderr, "station_tcp: part %d: no ExecuteList reached the board\n", i + 1);
+        return 1;
+      }
+      first.add(t0, *last, *first_sample);
       compile_ms.push_back(1e3 * r.compile_time_s);
       if (!client) continue;
       t0 = std::chrono::steady_clock::now();
@@ -276,11 +291,11 @@ int main(int argc, char** argv) {
     if (http_server) http_server->stop();
   }
   std::filesystem::remove_all(dir);
-  std::printf("station_tcp: %d parts (%s), 20-character serial \"SN 00000000000000001\"\n", parts,
-              real_time ? "real time" : "virtual time");
+  std::printf("station_tcp: %d parts (%s) on %s, 20-character serial \"SN 00000000000000001\"\n", parts,
+              real_time ? "real time" : "virtual time", device.c_str());
   print("MARK round trip", rtt_ms);
-  print("trigger to first sample", first_ms, "  (the client's send to the device's first block)");
-  print("of which the compile", compile_ms, "  (the object's text to its first sample in the line memory)");
+  first.print("the client's send to the device's first block");
+  print("first block in memory", compile_ms, "  (JobResult compile_time_s: the compiled job to its first block in the line memory)");
   std::printf("  marks per second           %.1f%s\n", (http ? 2 : 1) * parts / total_s, http ? " (TCP and HTTP)" : "");
   if (!http) return 0;
   print("POST /api/mark round trip", http_ms, "  (alternating with MARK)");

@@ -12,6 +12,7 @@ packages=(
   libcpp-httplib-dev                            # the station's HTTP + JSON interface (marker serve --http)
   libmodbus-dev python3-pymodbus                # Modbus TCP (marker serve --modbus) and the independent client its tests drive
   nodejs                                        # parses the operator page's script (StationHttp test)
+  chromium chromium-driver                      # the operator page in a real browser (StationBrowser test, WebDriver)
   libssl-dev                                    # SHA-256 of job files in the audit log (libcrypto)
   libhowardhinnant-date-dev tzdata              # time zones for dates, shifts and counter resets
   libzint-dev libdmtx-dev libzbar-dev libzxing-dev  # 2D codes: zint encodes; ZXing-C++, libdmtx and ZBar decode the simulated mark

@@ -110,7 +110,7 @@ Urb EmulatedBoard::out(std::span<const std::uint8_t> bytes) {
     // ReadPort is left out of the wire record (counted in read_ports): a station's trigger polls
     // it every millisecond, and the record would grow for as long as the station runs.
     if (w.opcode() != static_cast<std::uint16_t>(Op::ReadPort))
-      wire_.push_back(WireRecord{now, false, w, 0, status_locked()});
+      wire_.push_back(WireRecord{now, false, w, 0, status_locked(), std::chrono::steady_clock::now()});
     on_single(w);
     if (drop_next_reply_) {  // SingleFault::no_answer: taken, never answered
       drop_next_reply_ = false;
@@ -138,7 +138,7 @@ Urb EmulatedBoard::out(std::span<const std::uint8_t> bytes) {
     stalled_ = true;
     return Urb::stall;
   }
-  wire_.push_back(WireRecord{now, true, {}, number, status_locked()});
+  wire_.push_back(WireRecord{now, true, {}, number, status_locked(), std::chrono::steady_clock::now()});
   if (!ready_locked()) {
     violation("list packet " + std::to_string(number) + " arrived while READY was clear: lost");
     ++packets_lost_;

@@ -20,6 +20,7 @@
 //
 // Thread-safe: the USB side, the clock thread and the test's inspection all take one lock.
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -100,6 +101,9 @@ struct WireRecord {
   Word single;                  // when !packet
   std::size_t packet_number = 0;  // 1-based, when packet
   std::uint16_t status = 0;     // the status register when it arrived
+  // The host's steady clock when it arrived: a station's trigger to the board's first sample
+  // (ExecuteList) is measured against it (bench/prog_station_board_io.cpp).
+  std::chrono::steady_clock::time_point arrived{};
 };
 
 struct BoardState {

@@ -38,7 +38,15 @@ inline constexpr Choice kRequireCode{
      "every code must read back to its data (always so; the key says it in the file)"},
     "read", {}, "read"};
 
-inline constexpr SettingRef kObjectSettingList[] = {&kObjectName,    &kObjectPen,    &kTemplate,
+// Objects laid over each other on purpose: the clearance check (marker/production/object_clearance.*)
+// lets these pairs' inks touch. Never a code's quiet zone: a reader needs it bare whatever the job says.
+inline constexpr Text kObjectOverlaps{
+    {"", "overlaps",
+     "the objects whose ink this one's may touch on purpose (a frame around a text, a stroke marked twice): a list of "
+     "their names, text objects only"},
+    {}, "none"};
+
+inline constexpr SettingRef kObjectSettingList[] = {&kObjectName,     &kObjectPen,    &kTemplate,    &kObjectOverlaps,
                                                     &kRequireQuality, &kRequireGrade, &kRequireCode};
 inline constexpr SettingTable kObjectSettings{"object", "Every object", "objects[]", kObjectSettingList};
 

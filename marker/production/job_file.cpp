@@ -1,5 +1,6 @@
 #include "marker/production/job_file.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -236,6 +237,45 @@ DateCodeTable parse_date_code_table(JsonReader& t) {
   return table;
 }
 
+// An object's "overlaps": a list of other objects' names, each once (checked against the job's
+// objects by check_overlaps once all are read: a name may be a later object's).
+std::vector<std::string> parse_overlaps(JsonReader& o, const std::string& self) {
+  const std::string_view key = kObjectOverlaps.name.key;
+  const nlohmann::json* list = o.raw(key);
+  if (!list) return {};
+  if (!list->is_array()) o.fail(key, "expected a list of object names: [\"frame\"]");
+  std::vector<std::string> names;
+  for (std::size_t k = 0; k < list->size(); ++k) {
+    const nlohmann::json& n = (*list)[k];
+    const std::string at = json_index(key, k);
+    if (!n.is_string()) o.fail(at, "expected an object's name (a string)");
+    const std::string name = n.get<std::string>();
+    if (name == self) o.fail(at, "\"" + name + "\" is this object; name the objects it lies over");
+    if (std::find(names.begin(), names.end(), name) != names.end()) o.fail(at, "\"" + name + "\" is named twice");
+    names.push_back(name);
+  }
+  return names;
+}
+
+// Every "overlaps" name is another text object of the job: a code's quiet zone must stay bare.
+void check_overlaps(const JobFile& job, const nlohmann::json& objects) {
+  const std::string_view key = kObjectOverlaps.name.key;
+  for (std::size_t i = 0; i < job.objects.size(); ++i) {
+    const JobObject& obj = job.objects[i];
+    const JsonReader o(objects[i], job.source, json_index("objects", i));
+    for (std::size_t k = 0; k < obj.overlaps.size(); ++k) {
+      const std::string& name = obj.overlaps[k];
+      const auto other = std::find_if(job.objects.begin(), job.objects.end(),
+                                      [&](const JobObject& x) { return x.name == name; });
+      const std::string at = json_index(key, k);
+      if (other == job.objects.end()) o.fail(at, "no object named \"" + name + "\"");
+      if (obj.code() || other->code())
+        o.fail(at, "\"" + (obj.code() ? obj.name : name) +
+                       "\" is a code: its quiet zone must stay bare, so no object may lie over it");
+    }
+  }
+}
+
 }  // namespace
 
 std::map<std::string, CounterSpec> JobFile::used_counters() const {
@@ -243,6 +283,13 @@ std::map<std::string, CounterSpec> JobFile::used_counters() const {
   for (const JobObject& o : objects)
     for (const std::string& c : o.text_template().counters()) used.emplace(c, counters.at(c));
   return used;
+}
+
+bool JobFile::overlap_allowed(std::size_t i, std::size_t j) const {
+  const auto names = [](const JobObject& o, const std::string& other) {
+    return std::find(o.overlaps.begin(), o.overlaps.end(), other) != o.overlaps.end();
+  };
+  return names(objects[i], objects[j].name) || names(objects[j], objects[i].name);
 }
 
 std::vector<std::string> JobFile::required_variables() const {
@@ -367,6 +414,7 @@ JobFile parse_job(std::string_view text, const std::string& source) {
     }
     obj.body = parse_object_body(obj.kind, o, ctx);
     obj.require = parse_requirement(o, obj.code() != nullptr);
+    obj.overlaps = parse_overlaps(o, obj.name);
     o.finish();
     {
       const TextTemplate& t = obj.text_template();
@@ -384,6 +432,7 @@ JobFile parse_job(std::string_view text, const std::string& source) {
     }
     job.objects.push_back(std::move(obj));
   }
+  check_overlaps(job, *objects);
   for (const auto& [name, c] : job.counters)
     if (c.reset == ResetRule::shift && job.shifts.empty())
       top.fail("counters." + name + ".reset", "a reset at shift start needs the job's \"shifts\"");

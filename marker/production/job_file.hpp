@@ -64,6 +64,9 @@ struct JobObject {
   std::string pen;
   ObjectBody body;
   MarkRequirement require;  // "require": what its mark must be to count as good
+  // "overlaps": the objects (by name) whose ink this one's may touch on purpose; either side
+  // naming the other is enough. Text objects only: a code's quiet zone is always checked.
+  std::vector<std::string> overlaps;
 
   const TextObject* text() const { return std::get_if<TextObject>(&body); }
   const CodeJobObject* code() const { return std::get_if<CodeJobObject>(&body); }
@@ -91,6 +94,9 @@ struct JobFile {
   std::optional<JobDataList> data;
   std::map<std::string, JobPen> pens;
   std::vector<JobObject> objects;
+
+  // Objects i and j lie over each other on purpose (either names the other in "overlaps").
+  bool overlap_allowed(std::size_t i, std::size_t j) const;
 
   // The counters the objects' templates use (what one part consumes).
   std::map<std::string, CounterSpec> used_counters() const;

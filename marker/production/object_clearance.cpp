@@ -80,7 +80,7 @@ void check_objects_apart(const JobFile& job, const std::vector<CompiledJob>& com
           if (const auto p = code.first_intrusion(g.elements))
             throw InputError(object_place(job, a) + "its code's quiet zone is marked by " + named(job, b) + " at " +
                              at(*p) + "; move the objects apart");
-      if (b < a || !compiled[a].codes.empty() || !compiled[b].codes.empty()) continue;
+      if (b < a || !compiled[a].codes.empty() || !compiled[b].codes.empty() || job.overlap_allowed(a, b)) continue;
       // Two marks without a code: inks closer than the spot touch.
       for (const Point& p : ink[a])
         if (const auto q = grids[b].within(p, spot_mm))

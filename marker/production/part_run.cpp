@@ -110,6 +110,9 @@ DataPick PartRunner::data_pick() const {
 }
 
 PartResult PartRunner::mark_next(SysTime now, const PartOptions& options) {
+  using Steady = std::chrono::steady_clock;
+  PartTimes times;
+  times.started = Steady::now();
   context_.now = now;
   std::vector<CompiledJob> compiled;
   if (options.phase) options.phase(PartPhase::allocating, {});
@@ -118,12 +121,16 @@ PartResult PartRunner::mark_next(SysTime now, const PartOptions& options) {
   const Allocation a = store_.allocate(counters_, job_.shifts, context_, data_pick(), [&](const PartValues& v) {
     std::map<std::string, std::string> columns;
     if (v.data_row) columns = data_->values(*v.data_row);
+    const auto t0 = Steady::now();
     std::vector<ObjectText> texts = render_objects(job_, variables_, v.now, v.serials, &columns);
     compiled = compile(texts);
+    times.compile_s = std::chrono::duration<double>(Steady::now() - t0).count();
     return texts;
   });
+  times.committed = Steady::now();
   if (a.data_row) next_row_ = *a.data_row + 1;
   PartResult part;
+  part.times = times;
   part.mark_id = a.mark_id;
   part.texts = a.objects;
   part.serials = a.serials;

@@ -20,6 +20,7 @@
 //
 // A re-mark marks the texts of an earlier row again, in a row of its own linked to it, and
 // consumes no number.
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -42,6 +43,14 @@ struct ObjectRun {
   std::string text;
   bool started = false;  // false: an earlier object ended the part
   JobResult result;      // when started (quality etc. from the options' evaluator)
+};
+
+// Where a part's start goes, on the steady clock (the drain's DrainStats::first_write is on it
+// too): trigger-to-first-sample broken down (bench/prog_station_tcp.cpp).
+struct PartTimes {
+  std::chrono::steady_clock::time_point started{};    // mark_next called (a re-mark leaves these unset)
+  std::chrono::steady_clock::time_point committed{};  // the allocation committed durably
+  double compile_s = 0;  // inside the allocation: rendering, layout, planning (and any require check)
 };
 
 struct PartResult {
@@ -71,6 +80,7 @@ struct PartResult {
   // at the station's next start).
   OutcomeWrite recorded;
   std::string record_error;
+  PartTimes times;
 
   std::string text() const;  // the texts joined by new lines
   bool good() const { return outcome == JobOutcome::done && !rejected; }

@@ -30,7 +30,13 @@ std::string audit_select(int version) {
 std::string audit_query(const AuditFilter& f, int version) {
   std::string where;
   const auto add = [&](const std::string& cond) { where += (where.empty() ? "WHERE " : " AND ") + cond; };
-  if (!f.since_utc.empty()) add("m.time_utc >= ?1");
+  // The time index finds the first part since then, and the scan starts at its id: without the
+  // id bound SQLite reads every row in id order (3.3 s for 1000 rows of a 10 M-row store). Exact
+  // even when the clock went back: every row at or after ?1 has an id at or above that minimum,
+  // and the time condition drops the older rows between. INDEXED BY because the planner would
+  // otherwise take MIN(id) by walking the ids up from the first until one is late enough.
+  if (!f.since_utc.empty())
+    add("m.id >= (SELECT MIN(id) FROM marks INDEXED BY marks_time WHERE time_utc >= ?1) AND m.time_utc >= ?1");
   if (f.value) {
     const std::string issued =
         "SELECT mark_id FROM issues WHERE value = ?2" + std::string(f.counter.empty() ? "" : " AND counter = ?3");

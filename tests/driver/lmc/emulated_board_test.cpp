@@ -4,6 +4,7 @@
 // is exact.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 
 #include "tests/driver/lmc/board_rig.hpp"
@@ -152,6 +153,33 @@ TEST(LmcBoard, ReadyClearsWhenTheBufferIsFullAndAPacketSentAnywayIsLost) {
   EXPECT_EQ(s.executor.underrun_events, 1u);
   EXPECT_GT(s.executor.underrun_ticks, 0u);
   EXPECT_TRUE(s.executing);
+}
+
+// The wire record's host clock (WireRecord::arrived) is what the station's trigger-to-first-
+// sample figure is read against: each transfer stamped between the host's own readings of the
+// steady clock before and after it, in order.
+TEST(LmcBoard, StampsEachTransferWithTheHostsSteadyClock) {
+  using Clock = std::chrono::steady_clock;
+  EmulatedBoard board;
+  ListPacket p;
+  p.push(word(Op::DelayTime, 1));
+  std::vector<std::pair<Clock::time_point, Clock::time_point>> windows;
+  for (int i = 0; i < 3; ++i) {
+    const auto before = Clock::now();
+    if (i == 1)
+      board.out(p.bytes());
+    else
+      board.out(bytes(word(i == 0 ? Op::GetVersion : Op::ExecuteList)));
+    windows.emplace_back(before, Clock::now());
+  }
+  const std::vector<WireRecord> wire = board.wire();
+  ASSERT_EQ(wire.size(), 3u);
+  EXPECT_TRUE(wire[1].packet);
+  EXPECT_EQ(wire[2].single.opcode(), static_cast<std::uint16_t>(Op::ExecuteList));
+  for (std::size_t i = 0; i < wire.size(); ++i) {
+    EXPECT_GE(wire[i].arrived, windows[i].first) << "transfer " << i;
+    EXPECT_LE(wire[i].arrived, windows[i].second) << "transfer " << i;
+  }
 }
 
 TEST(LmcBoard, RecordsWhatTheHostGetsWrong) {

@@ -79,5 +79,39 @@ TEST(ObjectClearance, TwoTextsWhoseInksTouchAreRefusedTextsApartPass) {
   EXPECT_EQ(apart.code, 0) << apart.err;
 }
 
+// A frame laid over a text on purpose: "overlaps" on either object lets their inks touch, and
+// the part marks; it never opens a code's quiet zone, and a wrong name is refused where it is.
+TEST(ObjectClearance, ObjectsLaidOverEachOtherOnPurposeSayWhichAndMark) {
+  const Scratch run("marker_clearance_overlay");
+  const std::string over = std::string(kTextOver).insert(1, R"("overlaps": ["sn"], )");
+  const test::CliResult named_later = run.check(run.file("named_later.json", job_with(over)));
+  EXPECT_EQ(named_later.code, 0) << named_later.err;
+  // Said on the first object, naming one further down the list: the same.
+  std::string first_names = job_with(kTextOver);
+  first_names.insert(first_names.find(R"("name": "sn")"), R"("overlaps": ["lot"], )");
+  const std::string both = run.file("first_names.json", first_names);
+  EXPECT_EQ(run.check(both).code, 0) << run.check(both).err;
+  const test::CliResult m = run.mark(both);
+  ASSERT_EQ(m.code, 0) << m.err;
+  EXPECT_EQ(nlohmann::json::parse(m.out)["outcome"], "done");
+
+  const auto refused = [&](const std::string& name, const std::string& second, const std::string& expected) {
+    const test::CliResult c = run.check(run.file(name, job_with(second)));
+    EXPECT_EQ(c.code, 1) << name;
+    EXPECT_NE(c.err.find(expected), std::string::npos) << name << ": " << c.err;
+    EXPECT_EQ(c.err.find('\n'), c.err.size() - 1) << name << ": one line: " << c.err;
+  };
+  refused("code.json", std::string(kCodeOnTheText).insert(1, R"("overlaps": ["sn"], )"),
+          "objects[1].overlaps[0]: \"udi\" is a code: its quiet zone must stay bare, so no object may lie over it");
+  refused("unknown.json", std::string(kTextOver).insert(1, R"("overlaps": ["sm"], )"),
+          "objects[1].overlaps[0]: no object named \"sm\"");
+  refused("self.json", std::string(kTextOver).insert(1, R"("overlaps": ["lot"], )"),
+          "objects[1].overlaps[0]: \"lot\" is this object");
+  refused("twice.json", std::string(kTextOver).insert(1, R"("overlaps": ["sn", "sn"], )"),
+          "objects[1].overlaps[1]: \"sn\" is named twice");
+  refused("notalist.json", std::string(kTextOver).insert(1, R"("overlaps": "sn", )"),
+          "objects[1].overlaps: expected a list of object names");
+}
+
 }  // namespace
 }  // namespace mark

@@ -137,6 +137,31 @@ TEST(PartRun, ThreePartsTakeConsecutiveSerialsWithEveryObjectsPen) {
   EXPECT_EQ(test::check_store_consistent(*st.store, "serial"), (std::vector<std::int64_t>{41, 42, 43}));
 }
 
+// PartResult::times (the station's trigger-to-first-sample breakdown) against readings of the
+// same steady clock the runner does not take: the phase callback's, and the drain's first block.
+// Started before the allocation began, the commit before marking began, the compile inside the
+// allocation, the first block after the commit.
+TEST(PartRun, TimesOrderTheAllocationTheCommitAndTheFirstSample) {
+  using Clock = std::chrono::steady_clock;
+  Station st;
+  SimScanner sim(st.sim_options());
+  PartRunner runner = st.runner(sim);
+  std::map<PartPhase, Clock::time_point> at;
+  PartOptions options = virtual_time();
+  options.phase = [&](PartPhase p, const auto&) { at.emplace(p, Clock::now()); };
+  const auto before = Clock::now();
+  const PartResult p = runner.mark_next(SystemClock().now(), options);
+  ASSERT_EQ(p.outcome, JobOutcome::done) << p.message;
+  const PartTimes& t = p.times;
+  EXPECT_GE(t.started, before);
+  EXPECT_LE(t.started, at.at(PartPhase::allocating));
+  EXPECT_GE(t.committed, at.at(PartPhase::allocating));
+  EXPECT_LE(t.committed, at.at(PartPhase::marking));
+  EXPECT_GT(t.compile_s, 0);
+  EXPECT_LT(t.compile_s, std::chrono::duration<double>(t.committed - t.started).count());
+  EXPECT_GE(p.objects.at(0).result.drain.first_write, at.at(PartPhase::marking));
+}
+
 TEST(PartRun, ASecondObjectAbortedEndsThePartAndVoidsItsNumber) {
   Station st;
   SimScanner sim(st.sim_options());

@@ -38,7 +38,9 @@ class PostgresServer {
     return best;
   }
 
-  explicit PostgresServer(const std::filesystem::path& bin) : bin_(bin) {
+  // `durable`: the server flushes every commit to disk, as a plant's does (the benchmarks' figures);
+  // the tests' servers do not (kNoFlush).
+  explicit PostgresServer(const std::filesystem::path& bin, bool durable = false) : bin_(bin) {
     dir_ = std::filesystem::temp_directory_path() / ("marker-pg-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
@@ -56,7 +58,7 @@ class PostgresServer {
     started_ = true;  // from here on the destructor stops whatever was started
     run(as_ + (bin_ / "pg_ctl").string() + " -D " + data() + " -l " + (dir_ / "server.log").string() +
             " -w -t 60 -o \"-k " + dir_.string() + " -c listen_addresses='' -c max_connections=40" +
-            kNoFlush + "\" start",
+            (durable ? "" : kNoFlush) + "\" start",
         "pg_ctl start");
   }
   ~PostgresServer() {

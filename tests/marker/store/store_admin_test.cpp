@@ -80,6 +80,41 @@ TEST_F(Admin, AReadOnlyOpenReadsAndWritesNothing) {
   EXPECT_EQ(std::filesystem::last_write_time(path), mtime);
 }
 
+// `log --since` reads from the first part at or after the time (the time index gives its id):
+// every later part is read, even when the clock went back between parts and an older time sits
+// at a higher id, and none before it.
+TEST_F(Admin, SinceReadsEveryPartAtOrAfterTheTimeWhenTheClockWentBack) {
+  fill(6);
+  {
+    // The parts' times as a clock set back twice would write them (ids 2-7; 1 is the counter's
+    // creation): rewritten past the append-only trigger, as only a test may.
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+    const char* times =
+        "DROP TRIGGER marks_no_update; UPDATE marks SET time_utc = CASE id WHEN 2 THEN '2026-03-05T09:00:00.000000Z' "
+        "WHEN 3 THEN '2026-03-05T09:05:00.000000Z' WHEN 4 THEN '2026-03-05T09:01:00.000000Z' "
+        "WHEN 5 THEN '2026-03-05T09:06:00.000000Z' WHEN 6 THEN '2026-03-05T09:02:00.000000Z' "
+        "WHEN 7 THEN '2026-03-05T09:07:00.000000Z' ELSE time_utc END WHERE id BETWEEN 2 AND 7";
+    ASSERT_EQ(sqlite3_exec(db, times, nullptr, nullptr, nullptr), SQLITE_OK) << sqlite3_errmsg(db);
+    sqlite3_close(db);
+  }
+  auto store = open_store(path, StoreAccess::read_only);
+  const auto ids_since = [&](const std::string& since) {
+    std::vector<std::int64_t> ids;
+    AuditFilter f;
+    f.since_utc = since;
+    store->read_log(f, [&](const AuditRow& r) {
+      ids.push_back(r.id);
+      return true;
+    });
+    return ids;
+  };
+  EXPECT_EQ(ids_since("2026-03-05T09:05:00.000000Z"), (std::vector<std::int64_t>{3, 5, 7}));
+  EXPECT_EQ(ids_since("2026-03-05T09:01:30.000000Z"), (std::vector<std::int64_t>{3, 5, 6, 7}));
+  EXPECT_EQ(ids_since("2026-03-05T09:00:00.000000Z"), (std::vector<std::int64_t>{2, 3, 4, 5, 6, 7}));
+  EXPECT_TRUE(ids_since("2026-03-05T09:07:00.000001Z").empty());
+}
+
 TEST_F(Admin, ADamagedStoreIsRefusedAtTheStationsStart) {
   fill(200);
   {

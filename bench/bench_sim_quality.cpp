@@ -80,7 +80,7 @@ void BM_Quality(benchmark::State& state) {
   const QualityReference reference(job.intended);  // once per set of strokes, as a speed search would
   Quality q;
   for (auto _ : state) {
-    q = reference.evaluate(sim.lit_paths(), sim.dose());
+    q = reference.evaluate(sim.lit_paths(), sim.dose(), sim.intent());
     benchmark::ClobberMemory();  // (DoNotOptimize on a double member garbles it with GCC)
   }
   char label[160];

@@ -17,10 +17,16 @@
 // 10 µs servo dead time, a 10 kHz mirror resonance and 1 µm of position noise (issue 24; the
 // effects are driver/sim/plant.hpp's, which the planner does not model).
 //
-//   cps [--short] [--json] [--head NAME] [--strategy NAME] [--workers N]
+// Every pen gets the pulse frequency its speed needs for the spots of consecutive pulses to
+// overlap (the quality classes see gaps between them), within the laser source's range
+// (`--source`, default fiber); a speed that would need more than the source runs is not
+// reachable with that source.
+//
+//   cps [--short] [--json] [--head NAME] [--strategy NAME] [--workers N] [--source NAME]
 //   cps --speed MM_S [--head NAME] [--strategy NAME] [--text T] [--font F]
 // --speed evaluates one speed with each strategy's default parameters instead of searching.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -36,6 +42,7 @@
 
 #include "base/error.hpp"
 #include "driver/device_error.hpp"
+#include "driver/laser_source.hpp"
 #include "driver/sim/head_model.hpp"
 #include "driver/sim/quality_class.hpp"
 #include "fonts/catalog.hpp"
@@ -59,6 +66,12 @@ constexpr const char* kCharacters = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopq
 constexpr double kInkSpeed_mm_s = 3500;
 constexpr double kTick_s = 10e-6;
 constexpr double kLaserRise_s = 20e-6;  // the laser-rise rows: two ticks
+// Pulses: spots this share of a diameter apart at the marking speed (20 % overlap: margin for a
+// beam that runs faster than its command, which feed-forward's corners do), and never slower
+// than the sources' usual 30 kHz (LaserSettings' default), so slow rows mark as they did.
+constexpr double kPulsePitchShare = 0.8;
+constexpr double kBaseFrequency_khz = 30;
+constexpr int kFrequencyRounds = 3;  // raises of the frequency after a mark showed a gap
 
 // A strategy: a corner strategy, whether speeds are planned and the head fed forward, and the
 // parameters the search may change (x[0] is always the marking speed).
@@ -174,10 +187,38 @@ struct Trial {
   double cps = 0;
   double mark_time_s = 0;
   Quality quality;
+  double frequency_khz = 0;  // the pen's pulse frequency
 };
 
-JobSpec spec_for(const Workload& w, const RealHead& head, const Pen& pen) {
+// The laser source the rows mark with (--source).
+LaserSource g_source = LaserSource::fiber;
+
+// Whole kHz within the source's range.
+double within_source(double khz) {
+  const SourceLimits& s = limits_of(g_source);
+  return std::clamp(std::ceil(khz - 1e-9), s.min_frequency_khz, s.max_frequency_khz);
+}
+
+// The frequency a pen at `speed` starts from: spots kPulsePitchShare of a diameter apart.
+double frequency_for(double speed_mm_s, const RealHead& head) {
+  const double pitch_mm = kPulsePitchShare * head.model.spot_diameter_um * 1e-3;
+  return within_source(std::max(kBaseFrequency_khz, speed_mm_s / pitch_mm * 1e-3));
+}
+
+// After a mark whose pulses left a gap (the beam ran faster than the pen somewhere): the
+// frequency that puts the widest spacing seen at kPulsePitchShare. 0 when the source cannot
+// go higher, or there was no gap.
+double raised_frequency(double khz, const Quality& q) {
+  if (!(q.pulse_gap_max_um > 0) || q.spot_diameter_um <= 0) return 0;
+  const double spacing = q.pulse_gap_max_um + q.spot_diameter_um;
+  const double raised = within_source(khz * spacing / (kPulsePitchShare * q.spot_diameter_um));
+  return raised > khz ? raised : 0;
+}
+
+JobSpec spec_for(const Workload& w, const RealHead& head, const Pen& pen, double frequency_khz = 0) {
   JobSpec spec;
+  spec.laser.source = g_source;
+  spec.laser.frequency_khz = frequency_khz > 0 ? frequency_khz : frequency_for(pen.mark_speed_mm_s, head);
   spec.text = w.text;
   spec.font = w.font;
   spec.layout = w.layout;
@@ -190,8 +231,9 @@ JobSpec spec_for(const Workload& w, const RealHead& head, const Pen& pen) {
 const std::vector<std::string> kRobustPlants = {"", "tau_scale=0.9", "tau_scale=1.1", "dead_us=10",
                                                 "resonance_hz=10000", "noise_um=1"};
 
-Trial mark_with(const Workload& w, const RealHead& head, const Pen& pen, const Plant& plant = {}) {
-  const JobSpec spec = spec_for(w, head, pen);
+Trial mark_with(const Workload& w, const RealHead& head, const Pen& pen, const Plant& plant = {},
+                double frequency_khz = 0) {
+  const JobSpec spec = spec_for(w, head, pen, frequency_khz);
   JobOptions options;
   options.virtual_time = true;
   SimScannerOptions sim = simulator_options(spec);
@@ -199,7 +241,7 @@ Trial mark_with(const Workload& w, const RealHead& head, const Pen& pen, const P
   sim.plant = plant;
   SimScanner scanner(sim);
   const JobResult r = run_job_simulated(spec, options, scanner, w.reference.get());
-  return {w.characters / r.mark_time_s, r.mark_time_s, *r.quality};
+  return {w.characters / r.mark_time_s, r.mark_time_s, *r.quality, spec.laser.frequency_khz};
 }
 
 // The job's device time without running it (locus samples plus the laser delay line's tail):
@@ -310,29 +352,42 @@ class Search {
     if (it != cache_.end()) return false;  // seen: it did not improve then and cannot now
     std::optional<Trial> t;
     bool ok = true;
-    for (std::size_t c = 0; ok && c < row_.errors.size() * plants_.size(); ++c) {
-      const double e = row_.errors[c / plants_.size()];
-      std::optional<Trial> one;
-      try {
-        one = mark_with(w_, row_.head, pen_at(*row_.strategy, x, row_.model.with_lag_error(e)),
-                        plants_[c % plants_.size()]);
-      } catch (const InputError&) {
-      } catch (const DeviceError&) {
+    // One pen for every mark of the row, its frequency included: the speed's, raised (and every
+    // mark made again) when a mark's pulses still left a gap, up to the source's maximum.
+    double khz = frequency_for(x[0], row_.head);
+    for (int round = 0; round <= kFrequencyRounds; ++round) {
+      t.reset();
+      ok = true;
+      double raise = 0;
+      for (std::size_t c = 0; ok && c < row_.errors.size() * plants_.size(); ++c) {
+        const double e = row_.errors[c / plants_.size()];
+        std::optional<Trial> one;
+        try {
+          one = mark_with(w_, row_.head, pen_at(*row_.strategy, x, row_.model.with_lag_error(e)),
+                          plants_[c % plants_.size()], khz);
+        } catch (const InputError&) {
+        } catch (const DeviceError&) {
+        }
+        ++row_.trials;
+        ok = one && meets(one->quality, *row_.level);
+        if (!ok) {
+          // Worth another round only when the gap is all that failed.
+          if (one) {
+            Quality without_gap = one->quality;
+            without_gap.pulse_gap_max_um = 0;
+            if (meets(without_gap, *row_.level)) raise = raised_frequency(khz, one->quality);
+          }
+          break;
+        }
+        // The row's figures: the worst of its marks.
+        if (!t) {
+          t = one;
+        } else {
+          t->quality = worse_of(t->quality, one->quality);
+        }
       }
-      ++row_.trials;
-      ok = one && meets(one->quality, *row_.level);
-      if (!ok) break;
-      // The row's figures: the worst of its marks.
-      if (!t) {
-        t = one;
-      } else {
-        Quality& q = t->quality;
-        q.max_deviation_um = std::max(q.max_deviation_um, one->quality.max_deviation_um);
-        q.rms_deviation_um = std::max(q.rms_deviation_um, one->quality.rms_deviation_um);
-        q.coverage = std::min(q.coverage, one->quality.coverage);
-        q.dose_ratio_max = std::max(q.dose_ratio_max, one->quality.dose_ratio_max);
-        q.overshoot_um = std::max(q.overshoot_um, one->quality.overshoot_um);
-      }
+      if (ok || raise == 0) break;
+      khz = raise;
     }
     const Pen pen = pen_at(*row_.strategy, x, row_.model.with_lag_error(row_.errors[0]));
     cache_[x] = ok;
@@ -360,7 +415,10 @@ std::string mark_args(const Row& r) {
     std::snprintf(buf, sizeof buf, " --laser-rise-us %g", r.head.laser_rise_s * 1e6);
     head += buf;
   }
-  return head + " " + cli::pen_args_string(r.pen);
+  char laser[64];
+  std::snprintf(laser, sizeof laser, " --source %s --frequency %g", std::string(to_string(g_source)).c_str(),
+                r.trial ? r.trial->frequency_khz : kBaseFrequency_khz);
+  return head + " " + cli::pen_args_string(r.pen) + laser;
 }
 
 std::string params_text(const Row& r) {
@@ -400,10 +458,17 @@ int main(int argc, char** argv) {
   app.add_option("--speed", speed, "evaluate this marking speed with default parameters only (mm/s)");
   app.add_option("--text", text, "mark this text instead (diagnosis)");
   app.add_option("--font", font, "in this font instead (diagnosis)");
+  std::string source_name = "fiber";
+  app.add_option("--source", source_name,
+                 "laser source whose frequency range the pulses are searched in: " + laser_source_names());
   CLI11_PARSE(app, argc, argv);
 
   try {
     const auto t0 = std::chrono::steady_clock::now();
+    const std::optional<LaserSource> source = parse_laser_source(source_name);
+    if (!source || !limits_of(*source).pulsed)
+      throw InputError("--source " + source_name + ": a pulsed source (fiber, mopa, uv) is needed");
+    g_source = *source;
     const std::vector<Strategy> strategies = all_strategies();
     std::vector<const Strategy*> chosen;
     for (const Strategy& s : strategies)
@@ -483,11 +548,12 @@ int main(int argc, char** argv) {
         const Trial t =
             mark_with(work, r.head, pen_at(*r.strategy, x, r.model.with_lag_error(r.errors[0])));
         std::printf("%-6s %-6s %-11s %-17s %4.0f µs %6.0f mm/s  max %6.1f µm  rms %5.1f µm  cov %.4f  "
-                    "dose %.3f  over %5.1f µm  %.4f s  %6.0f cps\n",
+                    "dose %.3f  over %5.1f µm  %.0f kHz gap %.1f µm  dose/mm %.2f  %.4f s  %6.0f cps\n",
                     r.head_name.c_str(), r.head.head_model().c_str(), r.strategy->name.c_str(),
                     model_text(r).c_str(), r.head.laser_rise_s * 1e6, speed,
                     t.quality.max_deviation_um, t.quality.rms_deviation_um, t.quality.coverage,
-                    t.quality.dose_ratio_max, t.quality.overshoot_um, t.mark_time_s, t.cps);
+                    t.quality.dose_ratio_max, t.quality.overshoot_um, t.frequency_khz,
+                    t.quality.pulse_gap_max_um, t.quality.dose_per_mm_fraction, t.mark_time_s, t.cps);
       }
       return 0;
     }
@@ -554,6 +620,7 @@ int main(int argc, char** argv) {
                             {"cps", r.trial ? r.trial->cps : 0.0},
                             {"ink_bound_ratio", r.trial ? r.trial->cps / bound : 0.0},
                             {"speed_mm_s", r.trial ? r.x[0] : 0.0},
+                            {"source", to_string(g_source)},
                             {"trials", r.trials},
                             {"search_s", r.search_s}};
         if (r.trial) {
@@ -566,6 +633,9 @@ int main(int argc, char** argv) {
           j["coverage_fraction"] = r.trial->quality.coverage;
           j["dose_ratio_max"] = r.trial->quality.dose_ratio_max;
           j["overshoot_um"] = r.trial->quality.overshoot_um;
+          j["frequency_khz"] = r.trial->frequency_khz;
+          j["pulse_gap_max_um"] = r.trial->quality.pulse_gap_max_um;
+          j["dose_per_mm_fraction"] = r.trial->quality.dose_per_mm_fraction;
           j["mark_args"] = mark_args(r);
         } else {
           j["mark_args"] = nullptr;
@@ -579,21 +649,30 @@ int main(int argc, char** argv) {
                 "%s search; %.0f s\n", quick ? "short" : "full", elapsed);
     std::printf("ink-only bound: %.1f mm of ink at %.1f m/s = %.0f cps\n", work.ink_mm,
                 kInkSpeed_mm_s / 1000, bound);
-    std::printf("%-5s %-6s %-4s %-11s %-17s %-5s %6s %6s %7s  %s\n", "head", "servo", "rise",
-                "strategy", "planner model", "class", "cps", "/ink", "mm/s",
-                "max µm / rms µm / coverage / dose ratio; parameters");
+    const SourceLimits& src = limits_of(g_source);
+    std::printf("pulses: %s source (%g .. %g kHz), each pen at the frequency its speed needs; "
+                "\"max\" = the source's maximum (a faster pen leaves gaps)\n",
+                std::string(src.name).c_str(), src.min_frequency_khz, src.max_frequency_khz);
+    std::printf("%-5s %-6s %-4s %-11s %-17s %-5s %6s %6s %7s %5s  %s\n", "head", "servo", "rise",
+                "strategy", "planner model", "class", "cps", "/ink", "mm/s", "kHz",
+                "max µm / rms µm / coverage / dose ratio / dose per mm; parameters");
     for (const Row& r : rows) {
       std::printf("%-5s %-6s %-4.0f %-11s %-17s %-5s ", r.head_name.c_str(),
                   r.head.head_model().c_str(), r.head.laser_rise_s * 1e6, r.strategy->name.c_str(),
                   model_text(r).c_str(), std::string(to_string(r.level->level)).c_str());
       if (!r.trial) {
-        std::printf("%6s %6s %7s  not reached\n", "-", "-", "-");
+        std::printf("%6s %6s %7s %5s  not reached\n", "-", "-", "-", "-");
         continue;
       }
       const Quality& q = r.trial->quality;
-      std::printf("%6.0f %6.3f %7.0f  %.1f / %.1f / %.4f / %.2f; %s\n", r.trial->cps,
-                  r.trial->cps / bound, r.x[0], q.max_deviation_um, q.rms_deviation_um, q.coverage,
-                  q.dose_ratio_max, params_text(r).c_str());
+      char khz[16];
+      if (r.trial->frequency_khz >= src.max_frequency_khz)
+        std::snprintf(khz, sizeof khz, "max");
+      else
+        std::snprintf(khz, sizeof khz, "%.0f", r.trial->frequency_khz);
+      std::printf("%6.0f %6.3f %7.0f %5s  %.1f / %.1f / %.4f / %.2f / %.2f; %s\n", r.trial->cps,
+                  r.trial->cps / bound, r.x[0], khz, q.max_deviation_um, q.rms_deviation_um,
+                  q.coverage, q.dose_ratio_max, q.dose_per_mm_fraction, params_text(r).c_str());
     }
     std::printf("marker mark options of each row: cps --json (mark_args)\n");
   } catch (const std::exception& e) {

@@ -27,6 +27,7 @@ struct Stroke {
 struct StrokeSample {
   Vec2 p;
   double weight;
+  std::uint32_t stroke;
   double ideal_dose = 0;
 };
 
@@ -64,7 +65,7 @@ struct QualityReference::Data {
         const double len = norm(b - a);
         const int pieces = std::max(1, static_cast<int>(std::ceil(len / step)));
         for (int k = 0; k < pieces; ++k)
-          samples.push_back({a + ((k + 0.5) / pieces) * (b - a), len / pieces});
+          samples.push_back({a + ((k + 0.5) / pieces) * (b - a), len / pieces, stroke});
       }
       const bool closed = line.size() > 2 && norm(line.front() - line.back()) < 1e-9;
       strokes.push_back({first, static_cast<std::uint32_t>(segments.size() - 1), closed});
@@ -131,7 +132,7 @@ QualityReference::~QualityReference() = default;
 QualityReference::QualityReference(QualityReference&&) noexcept = default;
 QualityReference& QualityReference::operator=(QualityReference&&) noexcept = default;
 
-Quality QualityReference::evaluate(const LitPaths& lit, const DoseRaster& dose) const {
+Quality QualityReference::evaluate(const LitPaths& lit, const DoseRaster& dose, const MarkIntent& intent) const {
   const Data& d = *data_;
   if (std::abs(dose.pixel_mm() - d.pixel_mm) > 1e-12)
     throw std::invalid_argument("quality: dose raster pixel differs from the reference's");
@@ -178,20 +179,65 @@ Quality QualityReference::evaluate(const LitPaths& lit, const DoseRaster& dose) 
   }
   q.coverage = total > 0 ? covered / total : 0;
 
-  // Dose along the strokes relative to the ideal constant-speed mark of the same strokes.
-  std::vector<double> ratio;
+  // Dose along the strokes relative to the ideal constant-speed mark of the same strokes. The
+  // ideal leaves 1 s of full power per mm, so each ratio is also the energy per mm there.
+  std::vector<double> ratio, stroke_ratio;
   ratio.reserve(d.samples.size());
-  for (const StrokeSample& s : d.samples)
-    if (s.ideal_dose > 0) ratio.push_back(dose.sum_disc(s.p, d.options.dose_window_mm) / s.ideal_dose);
+  double least_stroke = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < d.samples.size();) {
+    // The samples of one stroke are consecutive: its median is its energy per mm.
+    stroke_ratio.clear();
+    double length = 0;
+    const std::uint32_t stroke = d.samples[i].stroke;
+    for (; i < d.samples.size() && d.samples[i].stroke == stroke; ++i) {
+      const StrokeSample& s = d.samples[i];
+      length += s.weight;
+      if (s.ideal_dose <= 0) continue;
+      const double r = dose.sum_disc(s.p, d.options.dose_window_mm) / s.ideal_dose;
+      ratio.push_back(r);
+      stroke_ratio.push_back(r);
+    }
+    if (length > 0 && !stroke_ratio.empty()) least_stroke = std::min(least_stroke, median(stroke_ratio));
+  }
   const double mid = median(ratio);
   const double top = ratio.empty() ? 0 : *std::max_element(ratio.begin(), ratio.end());
   q.dose_ratio_max = mid > 0 ? top / mid : (top > 0 ? no_median_ratio : 0);
+  if (std::isinf(least_stroke))
+    q.dose_per_mm_fraction = 1;  // only dwell dots: nothing has a per-mm figure
+  else
+    q.dose_per_mm_fraction = intent.nominal_dose_s_per_mm > 0 ? least_stroke / intent.nominal_dose_s_per_mm : 0;
+
+  // Continuity: spots of consecutive pulses must touch along the centre line.
+  if (intent.pulses) {
+    q.spot_diameter_um = intent.pulses->spot_diameter_um;
+    q.pulse_gap_max_um = std::max(0.0, intent.pulses->spacing_max_um - intent.pulses->spot_diameter_um);
+  }
   return q;
 }
 
 Quality evaluate_quality(const std::vector<std::vector<Vec2>>& intended_polylines,
-                         const LitPaths& lit, const DoseRaster& dose, QualityOptions options) {
-  return QualityReference(intended_polylines, options, dose.pixel_mm()).evaluate(lit, dose);
+                         const LitPaths& lit, const DoseRaster& dose, const MarkIntent& intent,
+                         QualityOptions options) {
+  return QualityReference(intended_polylines, options, dose.pixel_mm()).evaluate(lit, dose, intent);
+}
+
+Quality worse_of(const Quality& a, const Quality& b) {
+  Quality q;
+  q.max_deviation_um = std::max(a.max_deviation_um, b.max_deviation_um);
+  q.rms_deviation_um = std::max(a.rms_deviation_um, b.rms_deviation_um);
+  q.coverage = std::min(a.coverage, b.coverage);
+  q.dose_ratio_max = std::max(a.dose_ratio_max, b.dose_ratio_max);
+  q.overshoot_um = std::max(a.overshoot_um, b.overshoot_um);
+  // The gap is judged against its own spot: keep the pair whose gap is the larger share of it.
+  const auto share = [](const Quality& x) {
+    return x.spot_diameter_um > 0 ? x.pulse_gap_max_um / x.spot_diameter_um : 0.0;
+  };
+  const Quality& gappier = share(b) > share(a) ? b : a;
+  q.pulse_gap_max_um = gappier.pulse_gap_max_um;
+  q.spot_diameter_um = gappier.spot_diameter_um;
+  q.dose_per_mm_fraction = std::min(a.dose_per_mm_fraction, b.dose_per_mm_fraction);
+  q.lit_points = std::min(a.lit_points, b.lit_points);
+  return q;
 }
 
 }  // namespace mark

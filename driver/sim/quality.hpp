@@ -10,6 +10,7 @@
 
 #include "driver/sim/dose_raster.hpp"
 #include "driver/sim/lit_paths.hpp"
+#include "driver/sim/mark_intent.hpp"
 #include "driver/vec2.hpp"
 
 namespace mark {
@@ -32,6 +33,18 @@ struct Quality {
   // more than half of the stroke length got no dose at all (the median is 0).
   double dose_ratio_max = 0;
   double overshoot_um = 0;       // furthest lit position beyond the end of an open stroke
+  // Line continuity: the widest gap on the lit path's centre line between the spots of two
+  // consecutive pulses of one lit run — pulse spacing − spot diameter, 0 when the spots touch
+  // or overlap (and for a continuous-wave source). Each lit run starts its own train, so the
+  // jumps between strokes, and between the dots of a dot-style code, are not gaps.
+  double pulse_gap_max_um = 0;
+  double spot_diameter_um = 0;   // the spots' diameter (0: no pulses were evaluated)
+  // Dose sufficiency: the energy per mm the least-dosed stroke got (the median along it of the
+  // dose over the ideal constant-speed mark's), as a share of the pen's nominal energy per mm
+  // (MarkIntent). 1 = the pen's power at its speed; power scaled with speed, or a stroke faster
+  // than the pen, shows below 1. Strokes of no length (dwell dots) have no per-mm figure and do
+  // not count; with only those, 1.
+  double dose_per_mm_fraction = 0;
   std::size_t lit_points = 0;    // lit positions evaluated (0: nothing was lit; coverage is 0)
 };
 
@@ -46,15 +59,21 @@ class QualityReference {
   QualityReference& operator=(QualityReference&&) noexcept;
 
   // Throws std::invalid_argument if the raster's pixel differs from the reference's.
-  Quality evaluate(const LitPaths& lit, const DoseRaster& dose) const;
+  Quality evaluate(const LitPaths& lit, const DoseRaster& dose, const MarkIntent& intent) const;
 
  private:
   struct Data;
   std::unique_ptr<Data> data_;
 };
 
-// One-off evaluation: QualityReference(intended, options, dose.pixel_mm()).evaluate(lit, dose).
+// One-off evaluation: QualityReference(intended, options, dose.pixel_mm()).evaluate(lit, dose, intent).
 Quality evaluate_quality(const std::vector<std::vector<Vec2>>& intended_polylines,
-                         const LitPaths& lit, const DoseRaster& dose, QualityOptions options = {});
+                         const LitPaths& lit, const DoseRaster& dose, const MarkIntent& intent,
+                         QualityOptions options = {});
+
+// The worse of two marks' figures, figure by figure (largest deviation, gap, ratio; smallest
+// coverage, dose share, lit points): classify() of it is the lower class of the two. A part of
+// several objects, or a pen that must hold on several plants, is as good as this.
+Quality worse_of(const Quality& a, const Quality& b);
 
 }  // namespace mark

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "driver/device_error.hpp"
+#include "driver/laser_source.hpp"
 
 namespace mark {
 namespace {
@@ -108,7 +109,8 @@ void SimScanner::begin_job(const JobHeader& header) {
                   options_.head.name.c_str(), header.field_mm, options_.head.field_mm);
     throw DeviceFaultError({FaultCategory::out_of_field, msg, 0});
   }
-  const LaserSettings laser = header.pens.empty() ? LaserSettings{} : header.pens.front().laser;
+  const DevicePen pen = header.pens.empty() ? DevicePen{} : header.pens.front();
+  const LaserSettings laser = pen.laser;
   if (!(laser.power_pct >= 0 && laser.power_pct <= 100) || !(laser.frequency_khz > 0) ||
       !std::isfinite(laser.frequency_khz)) {
     char msg[200];
@@ -120,6 +122,7 @@ void SimScanner::begin_job(const JobHeader& header) {
   }
   lifecycle_.begin("begin_job");
   laser_ = laser;
+  mark_speed_mm_s_ = pen.mark_speed_mm_s;
   start_job();
 
   // Size everything the drain thread will touch, so write() never allocates.
@@ -159,6 +162,14 @@ DeviceReport SimScanner::end_job() {
                {"pulse_spacing_mean_um", p.spacing_mean_um},
                {"pulse_overlap_fraction", p.overlap()}};
   return r;
+}
+
+MarkIntent SimScanner::intent() const {
+  MarkIntent m;
+  if (mark_speed_mm_s_ > 0) m.nominal_dose_s_per_mm = laser_.power_pct / 100 / mark_speed_mm_s_;
+  // A continuous-wave source's frequency is its PWM carrier, not pulses that could leave gaps.
+  if (limits_of(laser_.source).pulsed) m.pulses = pulses_.figures();
+  return m;
 }
 
 // The beam itself belongs to the drain thread: abort() raises the request (the next write
@@ -214,6 +225,7 @@ void SimScanner::write(std::span<const ScanSample> block) {
   if (state == DeviceState::idle) {  // implicit job: full power, default frequency
     lifecycle_.begin("write");
     laser_ = LaserSettings{};
+    mark_speed_mm_s_ = DevicePen{}.mark_speed_mm_s;
     start_job();
   }
   try {

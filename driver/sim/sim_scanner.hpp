@@ -39,6 +39,7 @@
 #include "driver/sim/dose_trail.hpp"
 #include "driver/sim/head_model.hpp"
 #include "driver/sim/lit_paths.hpp"
+#include "driver/sim/mark_intent.hpp"
 #include "driver/sim/plant.hpp"
 #include "driver/sim/plant_effects.hpp"
 #include "driver/sim/pulse_train.hpp"
@@ -104,6 +105,9 @@ class SimScanner : public SampleDevice<ScanSample> {
   // The laser settings of this job (the header's first pen) and its pulse figures so far.
   const LaserSettings& laser() const { return laser_; }
   PulseFigures pulses() const { return pulses_.figures(); }
+  // What this job's pen meant (its energy per mm, the pulses it fired), for the quality figures.
+  // An implicit job (samples without begin_job) has DevicePen's defaults: 100 % at 1000 mm/s.
+  MarkIntent intent() const;
 
  private:
   struct Axis {
@@ -147,6 +151,7 @@ class SimScanner : public SampleDevice<ScanSample> {
   mutable bool lit_stale_ = false;
   std::vector<SimTraceRow> trace_;
   LaserSettings laser_;       // this job's pen
+  double mark_speed_mm_s_ = DevicePen{}.mark_speed_mm_s;  // and its marking speed
   double dose_scale_ = 1;     // the pen's power, 0..1
   PulseTrain pulses_;
 

@@ -348,12 +348,12 @@ int run_mark(const MarkArgs& a) {
       std::fprintf(stderr, "marker: warning: code %zu (%s) does not read back off the simulated mark\n", k + 1,
                    std::string(to_string(spec.codes[k].spec.symbology)).c_str());
   if (r.quality && classify(*r.quality) == QualityClass::poor)
-    std::fprintf(stderr, "marker: warning: poor mark predicted (%s): lower --speed\n",
+    std::fprintf(stderr, "marker: warning: poor mark predicted (%s): lower --speed (or, for a pulse gap, raise --frequency)\n",
                  quality_figures(*r.quality).c_str());
   if (r.pulses && r.pulses->separate_dots())
     std::fprintf(stderr,
                  "marker: warning: pulses land %.1f µm apart on a %.0f µm spot: lit strokes show "
-                 "as separate dots; lower --speed\n",
+                 "as separate dots; raise --frequency or lower --speed\n",
                  r.pulses->spacing_max_um, r.pulses->spot_diameter_um);
   return 0;
 }

@@ -10,6 +10,8 @@ nlohmann::json quality_json(const Quality& q, const std::optional<PulseFigures>&
                       {"coverage_fraction", q.coverage},
                       {"dose_ratio_max", q.dose_ratio_max},
                       {"overshoot_um", q.overshoot_um},
+                      {"pulse_gap_max_um", q.pulse_gap_max_um},
+                      {"dose_per_mm_fraction", q.dose_per_mm_fraction},
                       {"class", to_string(classify(q))}};
   if (pulses) j["separate_dots"] = pulses->separate_dots();
   return j;

@@ -9,8 +9,8 @@
 
 namespace mark {
 
-// Deviation, coverage, dose ratio, overshoot and the class; with the pulse figures also
-// `separate_dots` (the pulses' overlap is below 0: lit strokes show as rows of dots).
+// Deviation, coverage, dose ratio, overshoot, pulse gap, dose per mm and the class; with the
+// pulse figures also `separate_dots` (the pulses' overlap is below 0: rows of dots).
 nlohmann::json quality_json(const Quality& q, const std::optional<PulseFigures>& pulses = {});
 
 // outcome, ink marked, counts, times, drain figures, the stop or fault, the device's figures,

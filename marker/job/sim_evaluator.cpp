@@ -52,9 +52,9 @@ std::vector<CodeVerification> verify_codes(const JobSpec& spec, const CompiledJo
 
 Quality simulated_quality(const JobResult& result, const SimScanner& scanner,
                           const QualityReference* reference) {
-  return reference ? reference->evaluate(scanner.lit_paths(), scanner.dose())
+  return reference ? reference->evaluate(scanner.lit_paths(), scanner.dose(), scanner.intent())
                    : evaluate_quality(intended_polylines(result.job.figure), scanner.lit_paths(),
-                                      scanner.dose());
+                                      scanner.dose(), scanner.intent());
 }
 
 JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,

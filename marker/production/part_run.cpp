@@ -13,19 +13,6 @@
 namespace mark {
 namespace {
 
-// The worst of two quality figures: a part is as good as its worst object. Coverage and lit
-// points take the minimum, so classify() of the result is the lowest class of the two.
-Quality worst_of(const Quality& a, const Quality& b) {
-  Quality q;
-  q.max_deviation_um = std::max(a.max_deviation_um, b.max_deviation_um);
-  q.rms_deviation_um = std::max(a.rms_deviation_um, b.rms_deviation_um);
-  q.coverage = std::min(a.coverage, b.coverage);
-  q.dose_ratio_max = std::max(a.dose_ratio_max, b.dose_ratio_max);
-  q.overshoot_um = std::max(a.overshoot_um, b.overshoot_um);
-  q.lit_points = std::min(a.lit_points, b.lit_points);
-  return q;
-}
-
 std::string in_quotes(const std::string& s) { return "\"" + s + "\""; }
 
 }  // namespace
@@ -269,7 +256,7 @@ void PartRunner::summarise(PartResult& part) const {
     part.mark_time_s += o.result.mark_time_s;
     part.samples += o.result.samples;
     if (o.result.quality)
-      part.quality = part.quality ? worst_of(*part.quality, *o.result.quality) : *o.result.quality;
+      part.quality = part.quality ? worse_of(*part.quality, *o.result.quality) : *o.result.quality;
     if (o.result.pulses && (!part.pulses || o.result.pulses->spacing_max_um > part.pulses->spacing_max_um))
       part.pulses = o.result.pulses;
   }

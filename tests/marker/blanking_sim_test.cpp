@@ -28,7 +28,7 @@ Marked simulate(const Figure& f, const Pen& pen) {
   const Plan plan = plan_figure(f, pen);
   SimScanner sim(simulator_options(head_sl10(), pen));
   simulate_plan(plan, sim);
-  return {evaluate_quality(intended_polylines(f), sim.lit_paths(), sim.dose()), sim.device_time_s()};
+  return {evaluate_quality(intended_polylines(f), sim.lit_paths(), sim.dose(), sim.intent()), sim.device_time_s()};
 }
 
 Pen blanking(double speed) {

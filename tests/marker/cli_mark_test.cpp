@@ -174,3 +174,54 @@ TEST(CliMark, LaysOutAndPlansOncePerMark) {
 
 }  // namespace
 }  // namespace mark
+
+namespace mark {
+namespace {
+
+// Issue 24: the quality class sees the pulses. 2000 mm/s at 20 kHz puts them 100 µm apart on
+// the 40 µm spot — 60 µm of the centre line between spots (v / f − d) — so the mark is not
+// "high" whatever its geometry (fed forward, the beam is within 1 µm of the strokes); at
+// 100 kHz they are 20 µm apart, overlapping, and the same mark is "high".
+TEST(CliMark, PulsesThatDoNotOverlapAreNotHigh) {
+  auto mark_at = [](const char* khz) {
+    const auto r = test::run_cli({"mark", "SN 1", "--height", "3", "--feed-forward", "--speed", "2000", "--frequency", khz,
+                                  "--virtual-time", "--json"});
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  const auto dotted = mark_at("20");
+  EXPECT_EQ(dotted["quality"]["class"], "poor");  // a gap of 1.5 spots: not even "good"
+  EXPECT_NEAR(dotted["quality"]["pulse_gap_max_um"].get<double>(), 2000.0 / 20 - 40, 1.0);
+  EXPECT_TRUE(dotted["quality"]["separate_dots"].get<bool>());
+  const auto solid = mark_at("100");
+  EXPECT_EQ(solid["quality"]["class"], "high") << solid["quality"].dump();
+  EXPECT_DOUBLE_EQ(solid["quality"]["pulse_gap_max_um"].get<double>(), 0);
+  EXPECT_GT(solid["quality"]["dose_per_mm_fraction"].get<double>(), 0.8);
+  // The geometry is the same: only the pulses differ.
+  EXPECT_DOUBLE_EQ(dotted["quality"]["max_deviation_um"].get<double>(),
+                   solid["quality"]["max_deviation_um"].get<double>());
+}
+
+}  // namespace
+}  // namespace mark
+
+namespace mark {
+namespace {
+
+// Dot-style code modules: each dot (a spiral at the --speed auto speed) is its own lit run, so
+// the jumps between dots are not pulse gaps; inside a dot 30 kHz pulses overlap (4.6 µm apart
+// in this build). The Data Matrix reads and is "high" as before pulses were in the class.
+TEST(CliMark, DotStyleDataMatrixStillReadsAndIsHigh) {
+  const auto r = test::run_cli({"mark", "", "--code", "datamatrix:SN000042", "--code-style", "dot",
+                                "--virtual-time", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["quality"]["class"], "high") << j["quality"].dump();
+  EXPECT_DOUBLE_EQ(j["quality"]["pulse_gap_max_um"].get<double>(), 0);
+  EXPECT_GE(j["quality"]["dose_per_mm_fraction"].get<double>(), 0.8);
+  EXPECT_LT(j["pulse_spacing_um"].get<double>(), 40);
+  EXPECT_EQ(j["codes"][0]["data_match"], true);
+}
+
+}  // namespace
+}  // namespace mark

@@ -27,7 +27,9 @@ struct Case {
   std::vector<std::vector<Vec2>> intended;
   LitPaths lit;
   DoseRaster dose;
-  Quality eval() const { return evaluate_quality(intended, lit, dose); }
+  // mark_evenly leaves 1 s of full power per mm: the nominal of a pen at 100 % and 1 mm/s.
+  MarkIntent intent{1.0, {}};
+  Quality eval() const { return evaluate_quality(intended, lit, dose, intent); }
 };
 
 TEST(Quality, PerfectMarkScoresPerfectly) {
@@ -44,6 +46,42 @@ TEST(Quality, PerfectMarkScoresPerfectly) {
   EXPECT_NEAR(q.dose_ratio_max, 1.0, 0.03);
   EXPECT_LT(q.overshoot_um, 1e-6);
   EXPECT_EQ(q.lit_points, c.intended[0].size() + c.intended[1].size());
+}
+
+TEST(Quality, DosePerMmIsTheLeastDosedStrokesShareOfTheNominal) {
+  // Three strokes at the nominal, one at 40 % of it: the median of all (and so the dose ratio's
+  // denominator) stays at the nominal; the figure names the thin stroke.
+  Case c;
+  c.intended = {dense({0, 0}, {2, 0}), dense({0, 1}, {2, 1}), dense({0, 2}, {2, 2}), dense({0, 3}, {2, 3})};
+  for (std::size_t i = 0; i < c.intended.size(); ++i) {
+    c.lit.runs.push_back(c.intended[i]);
+    mark_evenly(c.dose, c.intended[i], i == 2 ? 0.4 : 1.0);
+  }
+  const Quality q = c.eval();
+  EXPECT_NEAR(q.dose_per_mm_fraction, 0.4, 0.01);
+  EXPECT_DOUBLE_EQ(q.coverage, 1.0);
+  // Twice the nominal for the pen: every stroke at half of it.
+  c.intent.nominal_dose_s_per_mm = 2.0;
+  EXPECT_NEAR(c.eval().dose_per_mm_fraction, 0.2, 0.005);
+  // No pulse figures given: no gap, and no spot to judge one against.
+  EXPECT_DOUBLE_EQ(q.pulse_gap_max_um, 0);
+  EXPECT_DOUBLE_EQ(q.spot_diameter_um, 0);
+}
+
+TEST(Quality, WorseOfTakesEachFiguresWorse) {
+  Quality a, b;
+  a.max_deviation_um = 3, b.max_deviation_um = 7;
+  a.coverage = 0.99, b.coverage = 1.0;
+  a.pulse_gap_max_um = 10, a.spot_diameter_um = 40;  // a quarter spot
+  b.pulse_gap_max_um = 10, b.spot_diameter_um = 20;  // half a spot: the worse gap
+  a.dose_per_mm_fraction = 0.9, b.dose_per_mm_fraction = 1.0;
+  a.lit_points = 5, b.lit_points = 9;
+  const Quality w = worse_of(a, b);
+  EXPECT_EQ(w.max_deviation_um, 7);
+  EXPECT_EQ(w.coverage, 0.99);
+  EXPECT_EQ(w.spot_diameter_um, 20);
+  EXPECT_EQ(w.dose_per_mm_fraction, 0.9);
+  EXPECT_EQ(w.lit_points, 5u);
 }
 
 TEST(Quality, ParallelOffsetGivesDeviationAndCoverageByRadius) {
@@ -148,13 +186,13 @@ TEST(Quality, PreparedReferenceGivesTheSameFiguresAndChecksThePixel) {
   c.lit.runs = {dense({0, 0.004}, {2.03, 0.004})};
   mark_evenly(c.dose, c.lit.runs[0]);
   const QualityReference ref(c.intended);
-  const Quality a = ref.evaluate(c.lit, c.dose), b = c.eval();
+  const Quality a = ref.evaluate(c.lit, c.dose, c.intent), b = c.eval();
   EXPECT_EQ(a.max_deviation_um, b.max_deviation_um);
   EXPECT_EQ(a.coverage, b.coverage);
   EXPECT_EQ(a.dose_ratio_max, b.dose_ratio_max);
   EXPECT_EQ(a.overshoot_um, b.overshoot_um);
   EXPECT_NEAR(a.coverage, 2.0 / 3.0, 0.01);  // the second stroke was never lit
-  EXPECT_THROW(ref.evaluate(c.lit, DoseRaster(0.01)), std::invalid_argument);
+  EXPECT_THROW(ref.evaluate(c.lit, DoseRaster(0.01), c.intent), std::invalid_argument);
 }
 
 TEST(Quality, NothingLitHasNoCoverage) {

@@ -67,13 +67,14 @@ TEST(PartVerdict, AnObjectBelowItsRequiredQualityIsRejectedNamingTheClass) {
   poor.quality->max_deviation_um = 55;
   poor.quality->coverage = 0.99;
   poor.quality->dose_ratio_max = 1.67;
+  poor.quality->dose_per_mm_fraction = 1;  // the pen's nominal energy per mm
   const JobSpec spec;
   MarkRequirement good;
   good.quality = QualityClass::good;
   EXPECT_FALSE(part_verdict({{&spec, &poor, {}}})) << "nothing required: nothing judged but the codes";
   const auto r = part_verdict({{&spec, &poor, good}});
   ASSERT_TRUE(r);
-  EXPECT_EQ(r->reason, "quality poor, below good (max deviation 55.0 µm, coverage 99.00 %, dose ratio 1.67)");
+  EXPECT_EQ(r->reason, "quality poor, below good (max deviation 55.0 µm, coverage 99.00 %, dose ratio 1.67, dose per mm 100 % of the pen's)");
   // Within "good"'s limits (30 µm, 98 %, dose ratio 2): met.
   poor.quality->max_deviation_um = 25;
   EXPECT_FALSE(part_verdict({{&spec, &poor, good}}));
@@ -81,7 +82,23 @@ TEST(PartVerdict, AnObjectBelowItsRequiredQualityIsRejectedNamingTheClass) {
   poor.quality->coverage = 0.3;
   poor.quality->dose_ratio_max = 1e9;
   EXPECT_EQ(part_verdict({{&spec, &poor, good}})->reason,
-            "quality poor, below good (max deviation 25.0 µm, coverage 30.00 %, most of the strokes got no dose)");
+            "quality poor, below good (max deviation 25.0 µm, coverage 30.00 %, most of the strokes got no dose, dose per mm 100 % of the pen's)");
+  // Pulses 60 µm apart on a 40 µm spot's line: a gap of half a spot is "good"'s limit.
+  poor.quality->coverage = 0.99;
+  poor.quality->dose_ratio_max = 1.2;
+  poor.quality->spot_diameter_um = 40;
+  poor.quality->pulse_gap_max_um = 20;
+  EXPECT_FALSE(part_verdict({{&spec, &poor, good}}));
+  poor.quality->pulse_gap_max_um = 21;
+  EXPECT_EQ(part_verdict({{&spec, &poor, good}})->reason,
+            "quality poor, below good (max deviation 25.0 µm, coverage 99.00 %, dose ratio 1.20, pulse gap "
+            "21.0 µm (spot 40 µm), dose per mm 100 % of the pen's)");
+  // A stroke at 45 % of the pen's energy per mm: below "good"'s half.
+  poor.quality->pulse_gap_max_um = 0;
+  poor.quality->dose_per_mm_fraction = 0.45;
+  EXPECT_EQ(part_verdict({{&spec, &poor, good}})->reason,
+            "quality poor, below good (max deviation 25.0 µm, coverage 99.00 %, dose ratio 1.20, pulse gap "
+            "0.0 µm (spot 40 µm), dose per mm 45 % of the pen's)");
   // A device without an evaluator gives no figures: nothing to fall short of.
   const JobResult blind;
   EXPECT_FALSE(part_verdict({{&spec, &blind, good}}));

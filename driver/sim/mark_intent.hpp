@@ -1,0 +1,22 @@
+#pragma once
+// What a mark was meant to be besides its strokes — the pen's energy per mm and the pulses its
+// source fired along the real lit path — for the quality figures that compare the mark with it
+// (quality.hpp: line continuity and dose sufficiency). The simulated scanner knows both for the
+// job it ran (SimScanner::intent()).
+#include <optional>
+
+#include "driver/sim/pulse_train.hpp"
+
+namespace mark {
+
+struct MarkIntent {
+  // The pen's nominal energy per mm: its power share / its marking speed, in the dose raster's
+  // unit (seconds of full power per mm). A pen at 100 % and 1000 mm/s: 0.001. ≤ 0: the pen puts
+  // nothing down, and no dose is sufficient.
+  double nominal_dose_s_per_mm = 0;
+  // The pulse train along the lit path (the source's pulses, pulse_train.hpp). Unset for a
+  // continuous-wave source: its line has no pulses to leave gaps between.
+  std::optional<PulseFigures> pulses;
+};
+
+}  // namespace mark

@@ -134,10 +134,23 @@ JobResult run_on_device(const JobSpec& spec, CompiledJob job, double compiled_s,
       throw DeviceFaultError({FaultCategory::device, desc.name + " takes no device commands", 0});
   }
   if (options.evaluator) options.evaluator->begin(spec, result.job);
-  if (samples) {
-    run_samples(spec, options, *samples, job_header(spec, result.job, desc), compiled_s, result);
-  } else {
-    run_commands(spec, options, *commands, result);
+  try {
+    if (samples) {
+      run_samples(spec, options, *samples, job_header(spec, result.job, desc), compiled_s, result);
+    } else {
+      run_commands(spec, options, *commands, result);
+      result.compile_time_s = compiled_s;
+    }
+  } catch (const DeviceStateError& e) {
+    // A stop between the re-arm above and begin_job (a station's ABORT from its network thread):
+    // the stop flag was raised first, then abort() found the device idle and left it aborted, so
+    // begin_job refused. Nothing reached the device: the job ended aborted before its first
+    // sample, not failed (the next job re-arms the device).
+    const bool stopped_first = options.stop && options.stop->requested();
+    if (!stopped_first || e.call() != "begin_job" || e.state() != DeviceState::aborted) throw;
+    result.outcome = JobOutcome::aborted;
+    result.stopped_at = 0;
+    result.ink_marked = 0;
     result.compile_time_s = compiled_s;
   }
   result.wall_time_s = seconds_since(t0);

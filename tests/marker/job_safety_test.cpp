@@ -11,6 +11,7 @@
 #include "fonts/catalog.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
+#include "marker/job/mark_evaluator.hpp"
 #include "marker/job/sim_evaluator.hpp"
 #include "marker/locus/locus_generator.hpp"
 
@@ -144,6 +145,55 @@ TEST(JobSafety, StopFromAnotherThreadInRealTimeWithinOneBlock) {
   EXPECT_GE(r.stop_latency_us, 0.0);
   expect_dark_from(sim, r.stopped_at);
   EXPECT_LT(r.ink_marked, 1.0);
+}
+
+// A station's ABORT raises the stop flag and then aborts the device. Landing after the runner
+// re-armed the device but before begin_job, abort() finds it idle and leaves it aborted, and
+// begin_job refuses: the job must end aborted with nothing marked, not failed (CI saw the station
+// go to `error` over it). The evaluator's begin() runs in exactly that window.
+TEST(JobSafety, AStopJustBeforeBeginJobEndsTheJobAbortedWithNothingMarked) {
+  const JobSpec spec = serial();
+  SimScanner sim(traced(spec));
+  StopFlag stop;
+  struct AbortAtBegin : MarkEvaluator {
+    SimScanner& device;
+    StopFlag& stop;
+    bool evaluated = false;
+    AbortAtBegin(SimScanner& d, StopFlag& s) : device(d), stop(s) {}
+    void begin(const JobSpec&, const CompiledJob&) override {
+      stop.request();
+      device.abort();
+    }
+    void evaluate(const JobSpec&, JobResult&) override { evaluated = true; }
+  } evaluator(sim, stop);
+  JobOptions o;
+  o.virtual_time = true;
+  o.stop = &stop;
+  o.evaluator = &evaluator;
+  const JobResult r = run_job(spec, o, sim);
+  EXPECT_EQ(r.outcome, JobOutcome::aborted);
+  EXPECT_FALSE(r.fault);
+  EXPECT_EQ(r.samples, 0u);
+  EXPECT_EQ(r.ink_marked, 0.0);
+  EXPECT_TRUE(evaluator.evaluated);
+  EXPECT_TRUE(sim.trace().empty());  // not one sample reached the scanner
+  EXPECT_EQ(sim.status().state, DeviceState::aborted);
+
+  // Without the stop flag the same refusal is a misuse of the lifecycle and is not hidden.
+  StopFlag none;
+  struct AbortOnly : MarkEvaluator {
+    SimScanner& device;
+    explicit AbortOnly(SimScanner& d) : device(d) {}
+    void begin(const JobSpec&, const CompiledJob&) override { device.abort(); }
+    void evaluate(const JobSpec&, JobResult&) override {}
+  } abort_only(sim);
+  o.stop = &none;
+  o.evaluator = &abort_only;
+  EXPECT_THROW(run_job(spec, o, sim), DeviceStateError);
+
+  // The next job re-arms the scanner and marks the whole part.
+  o.evaluator = nullptr;
+  EXPECT_EQ(run_job(spec, o, sim).outcome, JobOutcome::done);
 }
 
 TEST(JobSafety, DoneJobReportsTheWholeInk) {

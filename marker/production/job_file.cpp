@@ -250,6 +250,7 @@ std::vector<std::string> parse_overlaps(JsonReader& o, const std::string& self) 
     const std::string at = json_index(key, k);
     if (!n.is_string()) o.fail(at, "expected an object's name (a string)");
     const std::string name = n.get<std::string>();
+    check_name(o, at, name, "object");  // the names' own rules: no control character reaches a message
     if (name == self) o.fail(at, "\"" + name + "\" is this object; name the objects it lies over");
     if (std::find(names.begin(), names.end(), name) != names.end()) o.fail(at, "\"" + name + "\" is named twice");
     names.push_back(name);

@@ -109,6 +109,8 @@ TEST(ObjectClearance, ObjectsLaidOverEachOtherOnPurposeSayWhichAndMark) {
           "objects[1].overlaps[0]: \"lot\" is this object");
   refused("twice.json", std::string(kTextOver).insert(1, R"("overlaps": ["sn", "sn"], )"),
           "objects[1].overlaps[1]: \"sn\" is named twice");
+  refused("newline.json", std::string(kTextOver).insert(1, R"("overlaps": ["s\nn"], )"),
+          "objects[1].overlaps[0]: a object name cannot hold control characters");
   refused("notalist.json", std::string(kTextOver).insert(1, R"("overlaps": "sn", )"),
           "objects[1].overlaps: expected a list of object names");
 }

@@ -113,7 +113,7 @@ void mark_only(benchmark::State& state, bool quality) {
     JobSpec spec = compiler.spec();
     spec.text = text;
     JobResult r = run_compiled_job(spec, compiler.compile(text), options, line.scanner);
-    if (quality) r.quality = simulated_quality(r, line.scanner);
+    if (quality) r.quality = simulated_quality(r, line.scanner, mark_intent(spec, line.scanner));
     device_s += r.mark_time_s;
     benchmark::DoNotOptimize(r);
   }

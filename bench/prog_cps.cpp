@@ -192,6 +192,9 @@ struct Trial {
 
 // The laser source the rows mark with (--source).
 LaserSource g_source = LaserSource::fiber;
+// --material-speed: dose sufficiency against a material that a single line at full power marks
+// one beam diameter wide at this speed, the same for every pen (0: each pen's own power / speed).
+double g_material_speed_mm_s = 0;
 
 // Whole kHz within the source's range.
 double within_source(double khz) {
@@ -224,6 +227,10 @@ JobSpec spec_for(const Workload& w, const RealHead& head, const Pen& pen, double
   spec.layout = w.layout;
   spec.head = head.model;
   spec.pen = pen;
+  if (g_material_speed_mm_s > 0) {
+    spec.verify.response.reference_speed_mm_s = g_material_speed_mm_s;  // reference width: one beam
+    spec.verify.dose_vs_material = true;
+  }
   return spec;
 }
 
@@ -418,7 +425,13 @@ std::string mark_args(const Row& r) {
   char laser[64];
   std::snprintf(laser, sizeof laser, " --source %s --frequency %g", std::string(to_string(g_source)).c_str(),
                 r.trial ? r.trial->frequency_khz : kBaseFrequency_khz);
-  return head + " " + cli::pen_args_string(r.pen) + laser;
+  std::string material;
+  if (g_material_speed_mm_s > 0) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " --dose-reference material --line-speed %.17g", g_material_speed_mm_s);
+    material = buf;
+  }
+  return head + " " + cli::pen_args_string(r.pen) + laser + material;
 }
 
 std::string params_text(const Row& r) {
@@ -461,6 +474,10 @@ int main(int argc, char** argv) {
   std::string source_name = "fiber";
   app.add_option("--source", source_name,
                  "laser source whose frequency range the pulses are searched in: " + laser_source_names());
+  app.add_option("--material-speed", g_material_speed_mm_s,
+                 "judge dose per mm against a material a single full-power line marks one beam diameter "
+                 "wide at this speed, the same for every pen (mm/s; default: each pen's own power / speed)")
+      ->check(CLI::Range(1.0, 100000.0));
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -636,6 +653,8 @@ int main(int argc, char** argv) {
           j["frequency_khz"] = r.trial->frequency_khz;
           j["pulse_gap_max_um"] = r.trial->quality.pulse_gap_max_um;
           j["dose_per_mm_fraction"] = r.trial->quality.dose_per_mm_fraction;
+          j["material_dose_per_mm_fraction"] = r.trial->quality.material_dose_per_mm_fraction;
+          j["dose_reference"] = r.trial->quality.dose_vs_material ? "material" : "pen";
           j["mark_args"] = mark_args(r);
         } else {
           j["mark_args"] = nullptr;

@@ -14,6 +14,13 @@ struct MarkIntent {
   // unit (seconds of full power per mm). A pen at 100 % and 1000 mm/s: 0.001. ≤ 0: the pen puts
   // nothing down, and no dose is sufficient.
   double nominal_dose_s_per_mm = 0;
+  // The material's energy per mm, in the same unit: what a single line needs to mark one beam
+  // diameter wide (mark_response.hpp), so the same for every pen. 0: not known.
+  double material_dose_s_per_mm = 0;
+  // Dose sufficiency judged against the material's energy per mm instead of the pen's own: a
+  // fast pen whose power / speed is far below what the material needs is then not "high" however
+  // evenly it puts that little down.
+  bool dose_vs_material = false;
   // The pulse train along the lit path (the source's pulses, pulse_train.hpp). Unset for a
   // continuous-wave source: its line has no pulses to leave gaps between.
   std::optional<PulseFigures> pulses;

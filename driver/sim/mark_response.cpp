@@ -34,6 +34,10 @@ double MarkResponse::vanishing_speed_mm_s() const {
   return std::sqrt(2 / std::numbers::pi) / (beam_radius_mm() * threshold_s_mm2());
 }
 
+// The width is one diameter where the peak is e² times the threshold (line_width_mm), and the
+// peak falls as 1/speed.
+double MarkResponse::spot_line_speed_mm_s() const { return vanishing_speed_mm_s() / std::exp(2.0); }
+
 void check_mark_response(const MarkResponse& r) {
   require("spot diameter", r.spot_diameter_mm, 0.001, 5, "mm");
   require("reference speed", r.reference_speed_mm_s, 1, 100000, "mm/s");

@@ -23,6 +23,9 @@ struct MarkResponse {
   double line_width_mm(double speed_mm_s) const;
   // Fastest speed at which a single line still marks at all.
   double vanishing_speed_mm_s() const;
+  // Speed at which a single line marks one beam diameter wide: the material's energy per mm is
+  // full power at this speed (the reference speed when the reference line is one spot wide).
+  double spot_line_speed_mm_s() const;
 };
 
 // Throws std::invalid_argument naming the parameter when one is outside its range

@@ -202,10 +202,14 @@ Quality QualityReference::evaluate(const LitPaths& lit, const DoseRaster& dose, 
   const double mid = median(ratio);
   const double top = ratio.empty() ? 0 : *std::max_element(ratio.begin(), ratio.end());
   q.dose_ratio_max = mid > 0 ? top / mid : (top > 0 ? no_median_ratio : 0);
-  if (std::isinf(least_stroke))
-    q.dose_per_mm_fraction = 1;  // only dwell dots: nothing has a per-mm figure
-  else
-    q.dose_per_mm_fraction = intent.nominal_dose_s_per_mm > 0 ? least_stroke / intent.nominal_dose_s_per_mm : 0;
+  const auto share_of = [&](double reference_s_per_mm) {
+    if (std::isinf(least_stroke)) return 1.0;  // only dwell dots: nothing has a per-mm figure
+    return reference_s_per_mm > 0 ? least_stroke / reference_s_per_mm : 0.0;
+  };
+  q.material_dose_per_mm_fraction = intent.material_dose_s_per_mm > 0 ? share_of(intent.material_dose_s_per_mm) : 0;
+  q.dose_vs_material = intent.dose_vs_material;
+  q.dose_per_mm_fraction = intent.dose_vs_material ? share_of(intent.material_dose_s_per_mm)
+                                                   : share_of(intent.nominal_dose_s_per_mm);
 
   // Continuity: spots of consecutive pulses must touch along the centre line.
   if (intent.pulses) {
@@ -236,6 +240,10 @@ Quality worse_of(const Quality& a, const Quality& b) {
   q.pulse_gap_max_um = gappier.pulse_gap_max_um;
   q.spot_diameter_um = gappier.spot_diameter_um;
   q.dose_per_mm_fraction = std::min(a.dose_per_mm_fraction, b.dose_per_mm_fraction);
+  q.dose_vs_material = a.dose_vs_material || b.dose_vs_material;
+  // 0 is "not known", not the least share.
+  const double ma = a.material_dose_per_mm_fraction, mb = b.material_dose_per_mm_fraction;
+  q.material_dose_per_mm_fraction = ma <= 0 ? mb : mb <= 0 ? ma : std::min(ma, mb);
   q.lit_points = std::min(a.lit_points, b.lit_points);
   return q;
 }

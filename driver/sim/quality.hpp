@@ -41,10 +41,15 @@ struct Quality {
   double spot_diameter_um = 0;   // the spots' diameter (0: no pulses were evaluated)
   // Dose sufficiency: the energy per mm the least-dosed stroke got (the median along it of the
   // dose over the ideal constant-speed mark's), as a share of the pen's nominal energy per mm
-  // (MarkIntent). 1 = the pen's power at its speed; power scaled with speed, or a stroke faster
-  // than the pen, shows below 1. Strokes of no length (dwell dots) have no per-mm figure and do
-  // not count; with only those, 1.
+  // (MarkIntent), or of the material's when the intent says so (dose_vs_material). 1 = the pen's
+  // power at its speed; power scaled with speed, or a stroke faster than the pen, shows below 1.
+  // Strokes of no length (dwell dots) have no per-mm figure and do not count; with only those, 1.
   double dose_per_mm_fraction = 0;
+  bool dose_vs_material = false;  // which reference dose_per_mm_fraction is a share of
+  // The same least-dosed stroke as a share of the material's energy per mm (0: the material is
+  // not known), whichever the class is judged on: how far a pen is from marking the material as
+  // its reference line does.
+  double material_dose_per_mm_fraction = 0;
   std::size_t lit_points = 0;    // lit positions evaluated (0: nothing was lit; coverage is 0)
 };
 

@@ -29,8 +29,9 @@ std::string quality_figures(const Quality& q) {
   if (q.spot_diameter_um > 0)
     std::snprintf(gap, sizeof gap, ", pulse gap %.1f µm (spot %.0f µm)", q.pulse_gap_max_um, q.spot_diameter_um);
   char s[320];
-  std::snprintf(s, sizeof s, "max deviation %.1f µm, coverage %.2f %%, %s%s, dose per mm %.0f %% of the pen's",
-                q.max_deviation_um, 100 * q.coverage, dose, gap, 100 * q.dose_per_mm_fraction);
+  std::snprintf(s, sizeof s, "max deviation %.1f µm, coverage %.2f %%, %s%s, dose per mm %.0f %% of the %s",
+                q.max_deviation_um, 100 * q.coverage, dose, gap, 100 * q.dose_per_mm_fraction,
+                q.dose_vs_material ? "material's" : "pen's");
   return s;
 }
 

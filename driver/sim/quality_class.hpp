@@ -22,7 +22,7 @@ struct QualityLimits {
   // share of the spot diameter.
   double max_pulse_gap_share;
   // Dose sufficiency: the least-dosed stroke's energy per mm, at least this share of the pen's
-  // nominal (power / marking speed).
+  // nominal (power / marking speed), or of the material's (MarkIntent::dose_vs_material).
   double min_dose_per_mm_fraction;
 };
 

@@ -135,6 +135,7 @@ void add_verify_options(CLI::App& app, VerifyArgs& a) {
   add_setting(app, kBeamDiameter, a.beam_diameter_mm);
   add_setting(app, kLineWidth, a.line_width_mm);
   add_setting(app, kLineSpeed, a.line_speed_mm_s);
+  add_setting(app, kDoseReference, a.dose_reference);
   add_setting(app, kAperture, a.aperture);
   add_setting(app, kCamera, a.camera);
   add_setting(app, kCodeReader, a.reader);
@@ -148,6 +149,7 @@ CodeCheckOptions to_verify_options(const VerifyArgs& a) {
   v.camera = parse_camera_option(a.camera);
   v.reading.aperture_modules = a.aperture;
   v.reading.reader = a.reader;
+  v.dose_vs_material = a.dose_reference == "material";
   if (!a.reader.empty()) named_code_reader(a.reader, "--reader");
   return v;
 }

@@ -42,6 +42,7 @@ struct VerifyArgs {
   double aperture = *kAperture.value;
   std::string camera;  // KEY=VALUE,… over the default reader's camera
   std::string reader;  // "" (any two agree) or zxing, libdmtx, zbar
+  std::string dose_reference{kDoseReference.value};  // pen or material
 };
 
 void add_verify_options(CLI::App& app, VerifyArgs& args);

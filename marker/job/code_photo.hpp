@@ -14,6 +14,9 @@ struct CodeCheckOptions {
   MarkResponse response;   // the material: which fluence marks
   CameraSettings camera;   // the reader's camera and the light on the part
   VerifyOptions reading;   // synthetic aperture, which readers decide
+  // The quality class's dose sufficiency against this material's energy per mm (`response`)
+  // rather than each pen's own power / speed (--dose-reference material).
+  bool dose_vs_material = false;
 };
 
 // What the camera is aimed at: the symbol, its quiet zone, two modules and the beam's reach around.

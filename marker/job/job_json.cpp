@@ -12,6 +12,8 @@ nlohmann::json quality_json(const Quality& q, const std::optional<PulseFigures>&
                       {"overshoot_um", q.overshoot_um},
                       {"pulse_gap_max_um", q.pulse_gap_max_um},
                       {"dose_per_mm_fraction", q.dose_per_mm_fraction},
+                      {"dose_reference", q.dose_vs_material ? "material" : "pen"},
+                      {"material_dose_per_mm_fraction", q.material_dose_per_mm_fraction},
                       {"class", to_string(classify(q))}};
   if (pulses) j["separate_dots"] = pulses->separate_dots();
   return j;

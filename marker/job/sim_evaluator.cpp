@@ -36,7 +36,7 @@ void SimEvaluator::evaluate(const JobSpec& spec, JobResult& result) {
 }
 
 void SimEvaluator::read(const JobSpec& spec, JobResult& result) const {
-  result.quality = simulated_quality(result, scanner_, reference_);
+  result.quality = simulated_quality(result, scanner_, mark_intent(spec, scanner_), reference_);
   result.pulses = scanner_.pulses();
   result.codes = verify_codes(spec, result.job, scanner_.dose());
 }
@@ -50,11 +50,18 @@ std::vector<CodeVerification> verify_codes(const JobSpec& spec, const CompiledJo
   return out;
 }
 
-Quality simulated_quality(const JobResult& result, const SimScanner& scanner,
+MarkIntent mark_intent(const JobSpec& spec, const SimScanner& scanner) {
+  MarkIntent intent = scanner.intent();
+  intent.material_dose_s_per_mm = 1 / spec.verify.response.spot_line_speed_mm_s();
+  intent.dose_vs_material = spec.verify.dose_vs_material;
+  return intent;
+}
+
+Quality simulated_quality(const JobResult& result, const SimScanner& scanner, const MarkIntent& intent,
                           const QualityReference* reference) {
-  return reference ? reference->evaluate(scanner.lit_paths(), scanner.dose(), scanner.intent())
+  return reference ? reference->evaluate(scanner.lit_paths(), scanner.dose(), intent)
                    : evaluate_quality(intended_polylines(result.job.figure), scanner.lit_paths(),
-                                      scanner.dose(), scanner.intent());
+                                      scanner.dose(), intent);
 }
 
 JobResult run_job_simulated(const JobSpec& spec, const JobOptions& options, SimScanner& scanner,

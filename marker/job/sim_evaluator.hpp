@@ -54,9 +54,12 @@ class SimEvaluator : public MarkEvaluator {
 SimScannerOptions simulator_options(const JobSpec& spec);
 // Each of the job's codes read back off the dose of its mark (in the spec's order).
 std::vector<CodeVerification> verify_codes(const JobSpec& spec, const CompiledJob& job, const DoseRaster& dose);
+// What the job ran on `scanner` was meant to put down: the scanner's pen and pulses, the spec's
+// material and which of the two dose sufficiency is judged against.
+MarkIntent mark_intent(const JobSpec& spec, const SimScanner& scanner);
 // The quality figures of the job `result` just ran on `scanner`, against its figure's intended
 // strokes or `reference`.
-Quality simulated_quality(const JobResult& result, const SimScanner& scanner,
+Quality simulated_quality(const JobResult& result, const SimScanner& scanner, const MarkIntent& intent,
                           const QualityReference* reference = nullptr);
 // run_job on the scanner with a SimEvaluator of it: quality, pulses and codes filled. The
 // scanner keeps the dose for a preview.

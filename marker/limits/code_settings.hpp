@@ -55,13 +55,19 @@ inline constexpr Text kCamera{
 inline constexpr Choice kCodeReader{
     {"--reader", "", "code reader that decides"}, "zxing, libdmtx, zbar", {},
     "any two that read the symbology agree"};
+// What the quality class's dose sufficiency measures the least-dosed stroke against.
+inline constexpr Choice kDoseReference{
+    {"--dose-reference", "",
+     "quality: dose per mm judged against the pen's own power / speed, or against the material's need "
+     "(full power at the speed where a single line marks one beam diameter wide, from --line-width at --line-speed)"},
+    "pen, material", "pen"};
 // What the read-back must grade (ISO/IEC TR 29158 overall grade).
 
 inline constexpr SettingRef kCodeSettingList[] = {
     &kCodeEscapes, &kCodeSize,  &kModule,       &kBarHeight, &kMatrixSize,    &kMatrixShape,
     &kQrEcc,       &kQrVersion, &kModuleStyle,  &kDotShape,  &kDotSize,       &kCodeInvert,
     &kCodeX,       &kCodeY,     &kCodeAngle,    &kBeamDiameter, &kLineWidth,  &kLineSpeed,
-    &kAperture,    &kCamera,   &kCodeReader};
+    &kDoseReference, &kAperture, &kCamera,     &kCodeReader};
 inline constexpr SettingTable kCodeSettings{"code", "Code", "objects[]", kCodeSettingList};
 
 }  // namespace mark

@@ -202,6 +202,41 @@ TEST(CliMark, PulsesThatDoNotOverlapAreNotHigh) {
                    solid["quality"]["max_deviation_um"].get<double>());
 }
 
+// Issue 24: dose per mm against the material. The same "high" 2000 mm/s pen at full power puts
+// down half of what a material spot-wide at 1000 mm/s needs (--line-speed at the default line
+// width, one beam), a quarter of one spot-wide at 500 mm/s: judged against the material it is
+// "good" at best, then "poor"; a material spot-wide at 4000 mm/s it serves twice over. The
+// material's share is the pen's times v_spot / 2000 whichever reference the class uses.
+TEST(CliMark, DoseAgainstTheMaterialJudgesAFastPenByWhatTheMaterialNeeds) {
+  auto mark_on = [](const char* line_speed, const char* reference) {
+    const auto r = test::run_cli({"mark", "SN 1", "--height", "3", "--feed-forward", "--speed", "2000", "--frequency",
+                                  "100", "--line-speed", line_speed, "--dose-reference", reference, "--virtual-time",
+                                  "--json"});
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(r.out)["quality"];
+  };
+  const auto pen = mark_on("500", "pen");
+  EXPECT_EQ(pen["class"], "high") << pen.dump();
+  EXPECT_EQ(pen["dose_reference"], "pen");
+  const double own = pen["dose_per_mm_fraction"].get<double>();
+  EXPECT_NEAR(pen["material_dose_per_mm_fraction"].get<double>(), own * 500 / 2000, 0.01 * own);
+  const auto starved = mark_on("500", "material");
+  EXPECT_EQ(starved["dose_reference"], "material");
+  EXPECT_NEAR(starved["dose_per_mm_fraction"].get<double>(), own * 500 / 2000, 0.01 * own);
+  EXPECT_EQ(starved["class"], "poor") << starved.dump();
+  const auto half = mark_on("1000", "material");
+  EXPECT_NEAR(half["dose_per_mm_fraction"].get<double>(), own / 2, 0.01 * own);
+  EXPECT_NE(half["class"], "high") << half.dump();
+  const auto served = mark_on("4000", "material");
+  EXPECT_NEAR(served["dose_per_mm_fraction"].get<double>(), own * 2, 0.02 * own);
+  EXPECT_EQ(served["class"], "high") << served.dump();
+  EXPECT_DOUBLE_EQ(served["max_deviation_um"].get<double>(), pen["max_deviation_um"].get<double>());
+
+  const auto bad = test::run_cli({"mark", "SN 1", "--dose-reference", "paper", "--virtual-time"});
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_EQ(bad.err, "marker: --dose-reference: 'paper' is not one of pen, material\n");
+}
+
 }  // namespace
 }  // namespace mark
 

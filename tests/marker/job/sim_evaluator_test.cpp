@@ -81,9 +81,48 @@ TEST(SimEvaluator, OnTheScannerItselfFillsQualityPulsesAndCodes) {
   EXPECT_GE(r.pulses->spacing_max_um, 300.0 / r.pulses->frequency_khz - 0.01);
   EXPECT_LT(r.pulses->spacing_max_um, 1.05 * 300.0 / r.pulses->frequency_khz);
   // The same as the free function on the same marks.
-  const Quality q = simulated_quality(r, scanner);
+  const Quality q = simulated_quality(r, scanner, mark_intent(spec, scanner));
   EXPECT_DOUBLE_EQ(q.max_deviation_um, r.quality->max_deviation_um);
   EXPECT_DOUBLE_EQ(q.coverage, r.quality->coverage);
+}
+
+// Dose sufficiency against the material (--dose-reference material): the pen's own figure says
+// nothing about a material that needs more than the pen's power / speed; the material's does.
+// serial_job marks at 300 mm/s and 100 % power. A material whose reference line (one beam
+// diameter wide) is marked at full power at 100 mm/s needs 3× the pen's energy per mm.
+TEST(SimEvaluator, DoseAgainstTheMaterialFindsAPenThatPutsDownTooLittle) {
+  JobSpec spec = serial_job();
+  ASSERT_DOUBLE_EQ(spec.pen.mark_speed_mm_s, 300);
+  ASSERT_DOUBLE_EQ(spec.laser.power_pct, 100);
+  spec.verify.response.reference_speed_mm_s = 100;  // reference width = beam: spot-wide at 100 mm/s
+  ASSERT_NEAR(spec.verify.response.spot_line_speed_mm_s(), 100, 1e-9);
+  const auto mark = [&](bool vs_material) {
+    spec.verify.dose_vs_material = vs_material;
+    SimScanner scanner(simulator_options(spec));
+    SimEvaluator evaluator(scanner);
+    const JobResult r = run_job(spec, untimed(&evaluator), scanner);
+    EXPECT_EQ(r.outcome, JobOutcome::done);
+    return r.quality.value_or(Quality{});
+  };
+  const Quality pen = mark(false);
+  const Quality material = mark(true);
+  // Judged on the pen: "high", with the material's share reported beside it (a third).
+  EXPECT_EQ(classify(pen), QualityClass::high);
+  EXPECT_FALSE(pen.dose_vs_material);
+  EXPECT_GT(pen.dose_per_mm_fraction, 0.9);
+  EXPECT_NEAR(pen.material_dose_per_mm_fraction, pen.dose_per_mm_fraction / 3, 0.01);
+  // Judged on the material: the same marks, a third of what it needs, below "good"'s half.
+  EXPECT_TRUE(material.dose_vs_material);
+  EXPECT_NEAR(material.dose_per_mm_fraction, pen.dose_per_mm_fraction / 3, 0.01);
+  EXPECT_DOUBLE_EQ(material.material_dose_per_mm_fraction, material.dose_per_mm_fraction);
+  EXPECT_DOUBLE_EQ(material.max_deviation_um, pen.max_deviation_um);
+  EXPECT_EQ(classify(material), QualityClass::poor);
+  EXPECT_NE(quality_figures(material).find("of the material's"), std::string::npos) << quality_figures(material);
+  // A material the pen over-serves (spot-wide at 1000 mm/s, the default) is "high" either way.
+  spec.verify.response.reference_speed_mm_s = 1000;
+  const Quality served = mark(true);
+  EXPECT_NEAR(served.dose_per_mm_fraction, pen.dose_per_mm_fraction * 1000 / 300, 0.05);
+  EXPECT_EQ(classify(served), QualityClass::high);
 }
 
 TEST(SimEvaluator, BehindAnEmulatedBoardMarksAsTheDirectPath) {

@@ -7,15 +7,29 @@
 #include <string>
 
 namespace mark {
+namespace {
+
+// The velocity noise's own stream from the same seed (a different sequence for every seed).
+std::uint32_t velocity_seed(std::uint32_t seed) {
+  std::seed_seq mixed{seed, 0x76656cu /* "vel" */};
+  std::uint32_t out = 0;
+  mixed.generate(&out, &out + 1);
+  return out;
+}
+
+}  // namespace
 
 SimStylusHead::SimStylusHead(SimStylusHeadOptions options)
     : options_(std::move(options)),
       noise_rng_(options_.noise_seed),
+      velocity_noise_rng_(velocity_seed(options_.noise_seed)),
       lifecycle_("sim stylus head (" + mark::describe(options_.head) + ")") {
   validate(options_.head);
   if (options_.cells) validate(*options_.cells);
   if (!(options_.max_drive_um > 0)) throw std::invalid_argument("stylus head: amplifier range must be positive");
   if (!(options_.sense_noise_um >= 0)) throw std::invalid_argument("stylus head: sensing noise must be ≥ 0");
+  if (!(options_.sense_velocity_noise_um_s >= 0))
+    throw std::invalid_argument("stylus head: velocity sensing noise must be ≥ 0");
   for (const StylusMode& m : options_.head.modes) modes_.push_back({discretise(m), 0, 0});
 }
 
@@ -54,6 +68,8 @@ void SimStylusHead::begin_job(const JobHeader& header) {
   if (options_.cells) meter_.emplace(*options_.cells, cell_of_sample(n, options_.cells->cell_rate_hz) + 1);
   noise_rng_.seed(options_.noise_seed);
   noise_.reset();
+  velocity_noise_rng_.seed(velocity_seed(options_.noise_seed));
+  velocity_noise_.reset();
   for (Mode& m : modes_) m.x = m.v = 0;
   samples_ = 0;
   cutting_ = false;
@@ -151,7 +167,7 @@ void SimStylusHead::write(std::span<const StylusSample> block) {
   if (block.empty()) return;
   if (samples() == 0) settle_at(block.front().drive_um);
 
-  const double noise = options_.sense_noise_um;
+  const double noise = options_.sense_noise_um, velocity_noise = options_.sense_velocity_noise_um_s;
   bool lifted = lifted_.load(std::memory_order_relaxed);
   double y = 0;
   for (const StylusSample& s : block) {
@@ -177,7 +193,8 @@ void SimStylusHead::write(std::span<const StylusSample> block) {
     if (options_.record_profile && profile_.size() < profile_.capacity()) profile_.push_back(cut);
     if (options_.record_sense && sense_position_.size() < sense_position_.capacity()) {
       sense_position_.push_back(static_cast<float>(y + (noise > 0 ? noise * noise_(noise_rng_) : 0.0)));
-      sense_velocity_.push_back(static_cast<float>(v));
+      sense_velocity_.push_back(static_cast<float>(
+          v + (velocity_noise > 0 ? velocity_noise * velocity_noise_(velocity_noise_rng_) : 0.0)));
     }
     if (meter_) meter_->add(cut);
   }

@@ -7,8 +7,13 @@
 // - the cut-depth profile along the track (one value per sample, µm) and, with a cell geometry,
 //   every cell's depth, length, area and volume (driver/sim/stylus_cells.hpp), measured as the
 //   samples arrive;
-// - the sensing coil of the seed's FIG. 13–14: stylus position and velocity at every tick (the
-//   position with the coil's noise), recorded for the head response test of the auto-tuner.
+// - the sensing coil of the seed's FIG. 13–14: stylus position and velocity at every tick, each
+//   with its own white noise, recorded for the head response test of the auto-tuner. The two
+//   noises are independent (the seed's circuit derives position by integrating and velocity by
+//   differentiating): a fixed rms in µm on the position hurts at high frequency, where the
+//   displacement is small; a fixed rms in µm/s on the velocity hurts at low frequency, where the
+//   velocity ω·x is small. With the defaults they are equal, as a position, at
+//   ω = 200 / 0.02 rad/s (1.6 kHz), between the head's two resonances.
 //
 // Safety: a sample with `lifted` set (the drain's safe sample: underrun, abort, end) retracts the
 // head, and it stays retracted — cutting nothing — until the next job. halt() and abort() do the
@@ -41,7 +46,8 @@ struct SimStylusHeadOptions {
   StylusHeadModel head = default_stylus_head();
   double max_drive_um = 1000;          // amplifier range: |drive| above it is refused
   double sense_noise_um = 0.02;        // rms noise on the sensing coil's position
-  std::uint32_t noise_seed = 1;        // the noise is reproducible
+  double sense_velocity_noise_um_s = 200;  // rms noise on its velocity (0.2 mm/s)
+  std::uint32_t noise_seed = 1;        // the noise is reproducible (both, independently)
   std::optional<CellGeometry> cells;   // measure cells when set
   bool record_profile = true;          // keep the cut depth of every sample
   bool record_sense = false;           // keep the sensed position and velocity of every sample
@@ -97,8 +103,9 @@ class SimStylusHead : public SampleDevice<StylusSample> {
   std::vector<Mode> modes_;
   std::optional<CellMeter> meter_;
   std::vector<float> profile_, sense_position_, sense_velocity_;
-  std::mt19937 noise_rng_;
-  std::normal_distribution<float> noise_{0.0f, 1.0f};
+  std::mt19937 noise_rng_, velocity_noise_rng_;  // separate, so the position noise is that of
+                                                  // a head without a velocity coil
+  std::normal_distribution<float> noise_{0.0f, 1.0f}, velocity_noise_{0.0f, 1.0f};
   Lifecycle lifecycle_;
   std::atomic<bool> lifted_{true};
   std::atomic<bool> cutting_{false};

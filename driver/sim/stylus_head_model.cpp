@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace mark {
 
@@ -50,20 +51,35 @@ ModeStep discretise(const StylusMode& mode, double tick_s) {
           mode.gain};
 }
 
-std::complex<double> held_response(const StylusHeadModel& head, double freq_hz, double tick_s) {
+namespace {
+
+// The sampled state after each tick over the held drive, (position, velocity), at f.
+std::pair<std::complex<double>, std::complex<double>> held_state(const StylusHeadModel& head, double freq_hz,
+                                                                 double tick_s) {
   using C = std::complex<double>;
   const C zinv = std::polar(1.0, -2 * std::numbers::pi * freq_hz * tick_s);
-  C total = 0;
+  C x = 0, v = 0;
   for (const StylusMode& m : head.modes) {
     const ModeStep st = discretise(m, tick_s);
     const auto& p = st.phi;
-    // b = (I − Φ)(1, 0)ᵀ;  solve (I − Φ z⁻¹) s = b for the position component s0.
+    // b = (I − Φ)(1, 0)ᵀ;  solve (I − Φ z⁻¹) s = b by Cramer's rule.
     const C b0 = 1 - p[0], b1 = -p[2];
     const C a00 = 1.0 - p[0] * zinv, a01 = -p[1] * zinv, a10 = -p[2] * zinv, a11 = 1.0 - p[3] * zinv;
     const C det = a00 * a11 - a01 * a10;
-    total += st.gain * (b0 * a11 - a01 * b1) / det;
+    x += st.gain * (b0 * a11 - a01 * b1) / det;
+    v += st.gain * (a00 * b1 - a10 * b0) / det;
   }
-  return total;
+  return {x, v};
+}
+
+}  // namespace
+
+std::complex<double> held_response(const StylusHeadModel& head, double freq_hz, double tick_s) {
+  return held_state(head, freq_hz, tick_s).first;
+}
+
+std::complex<double> held_velocity_response(const StylusHeadModel& head, double freq_hz, double tick_s) {
+  return held_state(head, freq_hz, tick_s).second;
 }
 
 std::string describe(const StylusHeadModel& head) {

@@ -39,7 +39,9 @@ struct GravureArgs {
   std::string head;
   std::string nominal_head;
   double sense_noise_um = 0;
+  double sense_velocity_noise_um_s = 0;
   std::string tune;
+  std::string tune_from;
   std::vector<std::string> notches;
   std::string emphasis;
   double target_hz = 0;
@@ -60,6 +62,11 @@ GravureJobSpec make_spec(const GravureArgs& a) {
   if (!a.head.empty()) spec.head.head = parse_head(flag(kStylusHead), a.head);
   if (!a.nominal_head.empty()) spec.nominal_head = parse_head(flag(kNominalHead), a.nominal_head);
   spec.head.sense_noise_um = a.sense_noise_um;
+  spec.head.sense_velocity_noise_um_s = a.sense_velocity_noise_um_s;
+  if (a.tune_from == "both") spec.tuning.source = ResponseSource::fused;
+  else if (a.tune_from == "position") spec.tuning.source = ResponseSource::position;
+  else if (a.tune_from == "velocity") spec.tuning.source = ResponseSource::velocity;
+  else throw InputError(flag(kTuneFrom) + " '" + a.tune_from + "': expected " + std::string(kTuneFrom.choices));
   spec.tuning.target.corner_hz = a.target_hz;
 
   const bool manual = !a.notches.empty() || !a.emphasis.empty();
@@ -153,7 +160,9 @@ Command make_gravure_command() {
         add_setting(*sub, kStylusHead, a->head)->group(head);
         add_setting(*sub, kNominalHead, a->nominal_head)->group(head);
         add_setting(*sub, kSenseNoise, a->sense_noise_um)->group(head);
+        add_setting(*sub, kSenseVelocityNoise, a->sense_velocity_noise_um_s)->group(head);
         add_setting(*sub, kTune, a->tune)->group(head);
+        add_setting(*sub, kTuneFrom, a->tune_from)->group(head);
         add_setting(*sub, kNotch, a->notches)->group(head);
         add_setting(*sub, kEmphasis, a->emphasis)->group(head);
         add_setting(*sub, kTargetCorner, a->target_hz)->group(head);

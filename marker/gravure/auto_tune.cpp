@@ -11,7 +11,8 @@ namespace {
 // One response test: the pattern (through the bank, if any) into the head, sensing recorded.
 // Empty when cancelled.
 std::vector<ResponsePoint> response_test(SimStylusHead& head, const SweepOptions& sweep, const FilterBank* bank,
-                                         StylusRunOptions run, double& device_time_s, bool& cancelled) {
+                                         ResponseSource source, StylusRunOptions run, double& device_time_s,
+                                         bool& cancelled) {
   SweepPattern pattern(sweep);
   head.set_recording(false, true);
   run.job_name = bank ? "head response test (tuned)" : "head response test";
@@ -23,7 +24,12 @@ std::vector<ResponsePoint> response_test(SimStylusHead& head, const SweepOptions
     cancelled = true;
     return {};
   }
-  return pattern.measure(head.sensed_position_um());
+  switch (source) {
+    case ResponseSource::position: return pattern.measure(head.sensed_position_um());
+    case ResponseSource::velocity: return pattern.measure_velocity(head.sensed_velocity_um_s());
+    case ResponseSource::fused: break;
+  }
+  return pattern.measure(head.sensed_position_um(), head.sensed_velocity_um_s());
 }
 
 }  // namespace
@@ -43,11 +49,11 @@ Flatness measured_flatness(const std::vector<ResponsePoint>& response) {
 AutoTuneResult auto_tune(SimStylusHead& head, const AutoTuneOptions& o) {
   AutoTuneResult r;
   const bool profile = head.options().record_profile, sense = head.options().record_sense;
-  r.raw_response = response_test(head, o.identify, nullptr, o.run, r.test_time_s, r.cancelled);
+  r.raw_response = response_test(head, o.identify, nullptr, o.source, o.run, r.test_time_s, r.cancelled);
   if (!r.cancelled) {
     r.fit = fit_head(r.raw_response, o.modes);
     r.bank = design_for_head(r.fit.model, o.target);
-    r.tuned_response = response_test(head, o.verify, &r.bank, o.run, r.test_time_s, r.cancelled);
+    r.tuned_response = response_test(head, o.verify, &r.bank, o.source, o.run, r.test_time_s, r.cancelled);
     r.flatness = measured_flatness(r.tuned_response);
     r.within_tolerance = !r.cancelled && r.flatness.min_db >= -o.tolerance_db && r.flatness.max_db <= o.tolerance_db;
   }

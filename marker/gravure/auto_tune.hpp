@@ -1,6 +1,7 @@
 #pragma once
 // Automatic tuning (US 6,007,230 FIG. 8, blocks 230–238): run the head response test on the
-// head, fit its resonances, recompute the filter coefficients from the fit, and check the
+// head — measured from the sensing coil's position and velocity together, by default (see
+// stylus_head_response.hpp) — fit its resonances, recompute the filter coefficients from the fit, and check the
 // result the way the operator would — a second response test with the new filters in the path,
 // which must be flat within ±1 dB from 0 to 10 kHz (FIG. 11). Both tests go through the line
 // memory and the fixed-rate drain like any stylus job.
@@ -20,6 +21,7 @@ struct AutoTuneOptions {
   SweepOptions verify{100, 10000, 40};     // filters × head, 100 Hz .. 10 kHz
   TargetResponse target;
   int modes = 0;                           // 0: as many as the response shows
+  ResponseSource source = ResponseSource::fused;  // what both tests measure the response from
   double tolerance_db = 1;
   StylusRunOptions run;                    // virtual time, stop flag
 };

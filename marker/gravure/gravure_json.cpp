@@ -20,7 +20,8 @@ nlohmann::json response_json(const std::vector<ResponsePoint>& r) {
   for (const ResponsePoint& p : r)
     a.push_back({{"freq_hz", p.freq_hz},
                  {"gain_db", 20 * std::log10(std::abs(p.gain))},
-                 {"phase_deg", std::arg(p.gain) * 180 / std::numbers::pi}});
+                 {"phase_deg", std::arg(p.gain) * 180 / std::numbers::pi},
+                 {"velocity_weight", p.velocity_weight}});
   return a;
 }
 
@@ -117,7 +118,9 @@ nlohmann::json to_json(const GravureJobSpec& spec, const GravureReport& r) {
                         {"offset_um", spec.setup.lw.offset_um}}},
                 {"lift_um", spec.setup.lift_um},
                 {"stylus_angle_deg", spec.stylus_angle_deg}};
-  j["head"] = {{"modes", to_json(spec.head.head)}, {"sense_noise_um", spec.head.sense_noise_um}};
+  j["head"] = {{"modes", to_json(spec.head.head)},
+               {"sense_noise_um", spec.head.sense_noise_um},
+               {"sense_velocity_noise_um_s", spec.head.sense_velocity_noise_um_s}};
   nlohmann::json filters = to_json(r.bank);
   filters["source"] = std::string(to_string(r.filters));
   if (r.filters != FilterChoice::off) {
@@ -127,7 +130,8 @@ nlohmann::json to_json(const GravureJobSpec& spec, const GravureReport& r) {
   j["filters"] = filters;
   if (r.tuning) {
     const AutoTuneResult& t = *r.tuning;
-    j["tuning"] = {{"fitted", to_json(t.fit.model)},
+    j["tuning"] = {{"source", std::string(to_string(spec.tuning.source))},
+                   {"fitted", to_json(t.fit.model)},
                    {"fit_rms_relative_error", t.fit.rms_relative_error},
                    {"flatness_db", flatness_json(t.flatness)},
                    {"within_tolerance", t.within_tolerance},

@@ -73,7 +73,7 @@ struct ResponseFunctor {
       // noise is smaller, so a well-measured small gain counts as much as a peak.
       const double w = 1 / std::hypot(kRelativeFloor * std::abs(h), points[p].sigma);
       for (int i = 0; i < modes; ++i) {
-        const std::complex<double> hi = held_response({{m.modes[i]}}, points[p].freq_hz);
+        const std::complex<double> hi = point_response({{m.modes[i]}}, points[p]);
         a(2 * p, i) = hi.real() * w;
         a(2 * p + 1, i) = hi.imag() * w;
       }
@@ -122,7 +122,7 @@ HeadFit fit_modes(std::span<const ResponsePoint> response, std::vector<Peak> pea
   int count = 0;
   for (const ResponsePoint& p : response) {
     if (std::abs(p.gain) < kReliableSnr * p.sigma) continue;
-    sum += std::norm((held_response(fit.model, p.freq_hz) - p.gain) / std::abs(p.gain));
+    sum += std::norm((point_response(fit.model, p) - p.gain) / std::abs(p.gain));
     ++count;
   }
   fit.rms_relative_error = count ? std::sqrt(sum / count) : 0;

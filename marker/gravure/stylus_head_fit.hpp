@@ -7,7 +7,8 @@
 // count less. For given frequencies and dampings the modes' gains are linear and are solved
 // exactly inside every evaluation (variable projection), which leaves the search only 2
 // parameters a mode. The model is the held (DAC) head of driver/sim/stylus_head_model.hpp, the
-// system the test really measures.
+// system the test really measures, seen as each point saw it: from the position, the velocity
+// over jω, or their fused mix (point_response()).
 //
 // Start values: the peaks of |H| with at least 3 dB prominence among the points measured with a
 // signal-to-noise ratio of 10 or more (the FIG. 9 peaks), at most 4; a fit that ends on a

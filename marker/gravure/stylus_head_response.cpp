@@ -55,33 +55,99 @@ std::size_t SweepPattern::next(std::span<double> out) {
   return k;
 }
 
+void SweepPattern::check_length(std::span<const float> signal, const char* what) const {
+  if (signal.size() < total_)
+    throw InputError(std::string("head response: ") + std::to_string(signal.size()) + " sensed " + what +
+                     " samples for a pattern of " + std::to_string(total_));
+}
+
+SweepPattern::ToneFit SweepPattern::fit_tone(const Tone& t, std::span<const float> sensed) const {
+  // Least squares y ≈ c + a·cos(ωn) + b·sin(ωn) over the measured part of the tone.
+  const double w = 2 * std::numbers::pi * t.freq_hz * kStylusTick_s;
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d aty = Eigen::Vector3d::Zero();
+  for (std::uint64_t n = t.settle; n < t.length; ++n) {
+    const Eigen::Vector3d row(1, std::cos(w * n), std::sin(w * n));
+    ata += row * row.transpose();
+    aty += row * static_cast<double>(sensed[t.start + n]);
+  }
+  const Eigen::Vector3d p = ata.ldlt().solve(aty);
+  // The residual sets the uncertainty: var(a), var(b) = s² · diag((AᵀA)⁻¹).
+  double rss = 0;
+  for (std::uint64_t n = t.settle; n < t.length; ++n) {
+    const double r = sensed[t.start + n] - (p[0] + p[1] * std::cos(w * n) + p[2] * std::sin(w * n));
+    rss += r * r;
+  }
+  const double count = static_cast<double>(t.length - t.settle);
+  const Eigen::Matrix3d cov = ata.inverse() * (rss / std::max(1.0, count - 3));
+  // y = Re{(a − j b) e^{jωn}}.
+  return {{p[1], -p[2]}, std::sqrt(cov(1, 1) + cov(2, 2))};
+}
+
 std::vector<ResponsePoint> SweepPattern::measure(std::span<const float> sensed) const {
-  if (sensed.size() < total_)
-    throw InputError("head response: " + std::to_string(sensed.size()) + " sensed samples for a pattern of " +
-                     std::to_string(total_));
+  check_length(sensed, "position");
   std::vector<ResponsePoint> out;
+  // drive = Re{−j A e^{jωn}}.
+  const std::complex<double> u(0, -options_.amplitude_um);
   for (const Tone& t : tones_) {
-    // Least squares y ≈ c + a·cos(ωn) + b·sin(ωn) over the measured part of the tone.
-    const double w = 2 * std::numbers::pi * t.freq_hz * kStylusTick_s;
-    Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
-    Eigen::Vector3d aty = Eigen::Vector3d::Zero();
-    for (std::uint64_t n = t.settle; n < t.length; ++n) {
-      const Eigen::Vector3d row(1, std::cos(w * n), std::sin(w * n));
-      ata += row * row.transpose();
-      aty += row * static_cast<double>(sensed[t.start + n]);
-    }
-    const Eigen::Vector3d p = ata.ldlt().solve(aty);
-    // The residual sets the uncertainty: var(a), var(b) = s² · diag((AᵀA)⁻¹).
-    double rss = 0;
-    for (std::uint64_t n = t.settle; n < t.length; ++n) {
-      const double r = sensed[t.start + n] - (p[0] + p[1] * std::cos(w * n) + p[2] * std::sin(w * n));
-      rss += r * r;
-    }
-    const double count = static_cast<double>(t.length - t.settle);
-    const Eigen::Matrix3d cov = ata.inverse() * (rss / std::max(1.0, count - 3));
-    // y = Re{(a − j b) e^{jωn}},  drive = Re{−j A e^{jωn}}.
-    const std::complex<double> y(p[1], -p[2]), u(0, -options_.amplitude_um);
-    out.push_back({t.freq_hz, y / u, std::sqrt(cov(1, 1) + cov(2, 2)) / options_.amplitude_um});
+    const ToneFit f = fit_tone(t, sensed);
+    out.push_back({t.freq_hz, f.y / u, f.sigma / options_.amplitude_um, 0});
+  }
+  return out;
+}
+
+std::vector<ResponsePoint> SweepPattern::measure_velocity(std::span<const float> sensed) const {
+  check_length(sensed, "velocity");
+  std::vector<ResponsePoint> out;
+  const std::complex<double> u(0, -options_.amplitude_um);
+  for (const Tone& t : tones_) {
+    const ToneFit f = fit_tone(t, sensed);
+    // v = ẋ: the position's complex amplitude is the velocity's over jω (ω in rad/s).
+    const double omega = 2 * std::numbers::pi * t.freq_hz;
+    out.push_back({t.freq_hz, f.y / (std::complex<double>(0, omega) * u),
+                   f.sigma / (omega * options_.amplitude_um), 1});
+  }
+  return out;
+}
+
+std::vector<ResponsePoint> SweepPattern::measure(std::span<const float> sensed_um,
+                                                 std::span<const float> sensed_um_s) const {
+  return fuse(measure(sensed_um), measure_velocity(sensed_um_s));
+}
+
+std::complex<double> point_response(const StylusHeadModel& head, const ResponsePoint& point) {
+  const double w = point.velocity_weight;
+  std::complex<double> h = 0;
+  if (w < 1) h += (1 - w) * held_response(head, point.freq_hz);
+  if (w > 0)
+    h += w * held_velocity_response(head, point.freq_hz) / std::complex<double>(0, 2 * std::numbers::pi * point.freq_hz);
+  return h;
+}
+
+std::string_view to_string(ResponseSource source) {
+  switch (source) {
+    case ResponseSource::position: return "position";
+    case ResponseSource::velocity: return "velocity";
+    case ResponseSource::fused: break;
+  }
+  return "both";
+}
+
+std::vector<ResponsePoint> fuse(std::span<const ResponsePoint> position, std::span<const ResponsePoint> velocity) {
+  if (position.size() != velocity.size())
+    throw InputError("response fusion: " + std::to_string(position.size()) + " position tones and " +
+                     std::to_string(velocity.size()) + " velocity tones; the two must come from one sweep");
+  std::vector<ResponsePoint> out;
+  for (std::size_t i = 0; i < position.size(); ++i) {
+    const ResponsePoint &p = position[i], &v = velocity[i];
+    if (p.freq_hz != v.freq_hz)
+      throw InputError("response fusion: tone " + std::to_string(i) + " is at " + std::to_string(p.freq_hz) +
+                       " Hz in the position and " + std::to_string(v.freq_hz) + " Hz in the velocity");
+    // Weights 1/σ²; as the velocity's share, σp² / (σp² + σv²), which also covers a zero σ.
+    const double vp = p.sigma * p.sigma, vv = v.sigma * v.sigma;
+    const double share = vp + vv > 0 ? vp / (vp + vv) : 0.5;
+    const double sigma = vp + vv > 0 ? std::sqrt(vp * vv / (vp + vv)) : 0.0;
+    out.push_back({p.freq_hz, (1 - share) * p.gain + share * v.gain, sigma, share});
   }
   return out;
 }

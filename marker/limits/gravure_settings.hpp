@@ -58,9 +58,14 @@ inline constexpr Text kStylusHead{
 inline constexpr Text kNominalHead{
     {"--nominal-head", "", "the head model the default filters are designed for"}, {}, "the typical head"};
 inline constexpr Quantity kSenseNoise{{"--sense-noise", "", "sensing coil noise, rms"}, {0, 10, "µm"}, 0.02};
+inline constexpr Quantity kSenseVelocityNoise{
+    {"--sense-velocity-noise", "", "sensing coil velocity noise, rms"}, {0, 1000000, "µm/s"}, 200};
 inline constexpr Choice kTune{
     {"--tune", "", "filters: auto (measure and fit the head), nominal (designed for --nominal-head), off"},
     "auto, nominal, off", "nominal"};
+inline constexpr Choice kTuneFrom{
+    {"--tune-from", "", "what --tune auto measures the head from: both (position and velocity fused), position, velocity"},
+    "both, position, velocity", "both"};
 inline constexpr Text kNotch{
     {"--notch", "", "a notch filter by hand, FREQ_HZ:DAMPING:DEPTH_DB (repeatable)"}, {}, "none"};
 inline constexpr Text kEmphasis{
@@ -75,7 +80,7 @@ inline constexpr Toggle kNoCompare{{"--no-compare", "", "skip the engraving with
 inline constexpr SettingRef kGravureSettingList[] = {
     &kScreen,  &kCellRate,  &kResolution, &kStagger,      &kCtDepth,     &kCtChannel, &kCtGain, &kCtOffset,
     &kLwDepth, &kLwChannel, &kLwGain,     &kLwOffset,     &kLift,        &kStylusAngle, &kStylusHead,
-    &kNominalHead, &kSenseNoise, &kTune,  &kNotch,        &kEmphasis,    &kTargetCorner, &kRealTime, &kNoCompare};
+    &kNominalHead, &kSenseNoise, &kSenseVelocityNoise, &kTune, &kTuneFrom, &kNotch,        &kEmphasis,    &kTargetCorner, &kRealTime, &kNoCompare};
 inline constexpr SettingTable kGravureSettings{"gravure", "Gravure", "", kGravureSettingList};
 
 }  // namespace mark

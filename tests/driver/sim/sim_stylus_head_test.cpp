@@ -28,6 +28,7 @@ SimStylusHeadOptions quiet(StylusHeadModel head = default_stylus_head()) {
   SimStylusHeadOptions o;
   o.head = head;
   o.sense_noise_um = 0;
+  o.sense_velocity_noise_um_s = 0;
   o.record_sense = true;
   return o;
 }
@@ -216,6 +217,37 @@ TEST(SimStylusHead, SenseNoiseIsReproducible) {
   double sum = 0;
   for (float v : a.sensed_position_um()) sum += v * v;
   EXPECT_NEAR(std::sqrt(sum / 1000), 0.5, 0.05);
+}
+
+TEST(SimStylusHead, VelocityNoiseIsReproducibleAndIndependent) {
+  // A head at rest: the sensed velocity is the coil's velocity noise alone, at its rms, the same
+  // for the same seed, other for another, and it leaves the position noise as it was without it.
+  SimStylusHeadOptions o = quiet();
+  o.sense_noise_um = 0.5;
+  o.sense_velocity_noise_um_s = 300;
+  SimStylusHeadOptions without = o, reseeded = o;
+  without.sense_velocity_noise_um_s = 0;
+  reseeded.noise_seed = 2;
+  SimStylusHead a(o), b(o), c(without), d(reseeded);
+  for (SimStylusHead* h : {&a, &b, &c, &d}) {
+    h->begin_job(job(4000));
+    h->write(constant(4000, 0));
+    h->end_job();
+  }
+  EXPECT_EQ(a.sensed_velocity_um_s(), b.sensed_velocity_um_s());
+  EXPECT_NE(a.sensed_velocity_um_s(), d.sensed_velocity_um_s());
+  EXPECT_EQ(a.sensed_position_um(), c.sensed_position_um());
+  double sum = 0, cross = 0;
+  for (std::size_t k = 0; k < 4000; ++k) {
+    sum += a.sensed_velocity_um_s()[k] * a.sensed_velocity_um_s()[k];
+    cross += a.sensed_velocity_um_s()[k] * a.sensed_position_um()[k];
+  }
+  EXPECT_NEAR(std::sqrt(sum / 4000), 300, 15);
+  // Uncorrelated with the position noise: |ρ| well inside 4/√n.
+  EXPECT_LT(std::abs(cross / 4000 / (300 * 0.5)), 4 / std::sqrt(4000.0));
+  for (float v : c.sensed_velocity_um_s()) EXPECT_EQ(v, 0);
+  o.sense_velocity_noise_um_s = -1;
+  EXPECT_THROW(SimStylusHead{o}, std::invalid_argument);
 }
 
 }  // namespace

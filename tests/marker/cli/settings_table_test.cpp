@@ -439,6 +439,8 @@ TEST(Settings, TheLibrarysDefaultsAreTheTables) {
   EXPECT_EQ(GravureJobSpec{}.stylus_angle_deg, kStylusAngle.fallback());
   EXPECT_EQ(TargetResponse{}.corner_hz, kTargetCorner.fallback());
   EXPECT_EQ(SimStylusHeadOptions{}.sense_noise_um, kSenseNoise.fallback());
+  EXPECT_EQ(SimStylusHeadOptions{}.sense_velocity_noise_um_s, kSenseVelocityNoise.fallback());
+  EXPECT_EQ(to_string(AutoTuneOptions{}.source), kTuneFrom.value);
   const CounterSpec counter;
   EXPECT_EQ(counter.start, kCounterStart.fallback());
   EXPECT_EQ(counter.step, kCounterStep.fallback());

@@ -68,8 +68,32 @@ TEST(GravureCli, TuneAutoReportsTheFittedHead) {
   EXPECT_NEAR(fitted[1]["freq_hz"].get<double>(), 6100, 122);
   EXPECT_TRUE(j["tuning"]["within_tolerance"].get<bool>());
   EXPECT_GT(j["tuning"]["flatness_db"]["min"].get<double>(), -1);
+  // Measured from position and velocity: the lowest tone mostly the position's, the highest
+  // mostly the velocity's.
+  EXPECT_EQ(j["tuning"]["source"], "both");
+  const auto& raw = j["tuning"]["raw_response"];
+  EXPECT_LT(raw.front()["velocity_weight"].get<double>(), 0.5);
+  EXPECT_GT(raw.back()["velocity_weight"].get<double>(), 0.5);
+  EXPECT_EQ(j["head"]["sense_velocity_noise_um_s"], 200);
   EXPECT_EQ(j["filters"]["source"], "tuned");
   EXPECT_FALSE(j.contains("depth_error_unfiltered_um"));
+}
+
+TEST(GravureCli, TuneFromOneSignalAndItsErrors) {
+  const CliResult r = run_cli({"gravure", files().image, "--tune", "auto", "--tune-from", "velocity",
+                               "--sense-velocity-noise", "500", "--json", "--no-compare"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["tuning"]["source"], "velocity");
+  EXPECT_EQ(j["head"]["sense_velocity_noise_um_s"], 500);
+  for (const auto& p : j["tuning"]["raw_response"]) EXPECT_EQ(p["velocity_weight"], 1);
+  EXPECT_TRUE(j["tuning"]["within_tolerance"].get<bool>());
+  const CliResult bad = run_cli({"gravure", files().image, "--tune-from", "flux"});
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("--tune-from"), std::string::npos) << bad.err;
+  const CliResult negative = run_cli({"gravure", files().image, "--sense-velocity-noise", "-1"});
+  EXPECT_NE(negative.code, 0);
+  EXPECT_NE(negative.err.find("--sense-velocity-noise"), std::string::npos) << negative.err;
 }
 
 TEST(GravureCli, PreviewShowsIntendedAndEngravedSideBySide) {

@@ -59,7 +59,7 @@ inline constexpr Text kNominalHead{
     {"--nominal-head", "", "the head model the default filters are designed for"}, {}, "the typical head"};
 inline constexpr Quantity kSenseNoise{{"--sense-noise", "", "sensing coil noise, rms"}, {0, 10, "µm"}, 0.02};
 inline constexpr Quantity kSenseVelocityNoise{
-    {"--sense-velocity-noise", "", "sensing coil velocity noise, rms"}, {0, 1000000, "µm/s"}, 200};
+    {"--sense-velocity-noise", "", "sensing coil velocity noise, rms"}, {0, 100000, "µm/s"}, 200};
 inline constexpr Choice kTune{
     {"--tune", "", "filters: auto (measure and fit the head), nominal (designed for --nominal-head), off"},
     "auto, nominal, off", "nominal"};

@@ -11,6 +11,7 @@ packages=(
   libsqlite3-dev sqlite3 libpq-dev postgresql   # serial store: SQLite (default) and PostgreSQL (tests start a private server)
   libcpp-httplib-dev                            # the station's HTTP + JSON interface (marker serve --http)
   libmodbus-dev python3-pymodbus                # Modbus TCP (marker serve --modbus) and the independent client its tests drive
+  python3-serial-asyncio                        # pymodbus.client imports it (Debian only recommends it)
   nodejs                                        # parses the operator page's script (StationHttp test)
   chromium chromium-driver                      # the operator page in a real browser (StationBrowser test, WebDriver)
   libssl-dev                                    # SHA-256 of job files in the audit log (libcrypto)

@@ -6,14 +6,18 @@
 //    §5.4: doubling the speed to 1 m/s took 54 % of the time).
 // A setting counts as decoding when the decoded data equals the data; a stricter "solid" count
 // also wants every module on the right side of half marked (no module that only the reader's
-// error correction saves). The scans go from the easy end; "reliable" is the end of the first
+// error correction saves). The module scans also give the smallest module still at ISO/IEC
+// TR 29158 grade C or better off the camera model's picture, and the grade at the smallest
+// module that decodes. The scans go from the easy end; "reliable" is the end of the first
 // unbroken run of passing settings, "extreme" the most extreme setting that passed at all.
 //
 //   code_limits [--head SL10] [--corner blanking] [--json] [--step-um 2.5] [--speed-step 250]
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -34,7 +38,10 @@ struct Trial {
   bool solid = false;
   double mark_time_s = 0;
   double fill_ratio = 0;
+  int grade = 0;  // ISO/IEC TR 29158 overall grade off the camera's picture: 4 A … 1 D, 0 F or none
 };
+
+constexpr int kGradeC = 2;
 
 CornerStrategy corner = CornerStrategy::blanking;
 
@@ -51,7 +58,8 @@ Trial trial(const HeadModel& head, ModuleStyle style, double module_mm, double s
   try {
     const SimulatedJob r = simulate_job(job);
     const CodeVerification& v = r.codes.front();
-    return {0, v.data_match, v.data_match && v.modules_wrong == 0, r.mark.mark_time_s, v.fill_ratio.value_or(0)};
+    return {0, v.data_match, v.data_match && v.modules_wrong == 0, r.mark.mark_time_s, v.fill_ratio.value_or(0),
+            v.grade ? v.grade->overall : 0};
   } catch (const std::exception&) {
     return {};  // a layout the style refuses (modules narrower than the beam) does not read
   }
@@ -124,13 +132,25 @@ int main(int argc, char** argv) {
                 {ModuleStyle::dot, 150, 0.40, 0.05}};
   for (const auto& s : styles) {
     const std::string key = std::string(to_string(s.style)) + "_" + std::to_string(static_cast<int>(s.speed_mm_s)) + "_mm_s";
-    const Limit l = scan(s.from_mm, s.to_mm, step_um / 1000,
-                         [&](double m) { return trial(*head, s.style, m, s.speed_mm_s).reads; });
+    // One mark per module; the decode and the grade C scans read the same marks.
+    std::map<double, Trial> marked;
+    const auto at = [&](double m) -> const Trial& {
+      auto it = marked.find(m);
+      if (it == marked.end()) it = marked.emplace(m, trial(*head, s.style, m, s.speed_mm_s)).first;
+      return it->second;
+    };
+    const Limit l = scan(s.from_mm, s.to_mm, step_um / 1000, [&](double m) { return at(m).reads; });
+    const Limit c = scan(s.from_mm, s.to_mm, step_um / 1000, [&](double m) { return at(m).grade >= kGradeC; });
     out["smallest_module_mm"][key] = to_json(l);
+    out["smallest_module_grade_c_mm"][key] = to_json(c);
+    const int grade_at_smallest = l.reliable ? at(*l.reliable).grade : 0;
+    out["grade_at_smallest_module"][key] = grade_at_smallest;
     if (!json)
-      std::printf("%s %-6s at %4.0f mm/s: smallest module that decodes %s mm (reliable), %s mm (any)\n",
+      std::printf("%s %-6s at %4.0f mm/s: smallest module that decodes %s mm (reliable, grade %c), %s mm (any); "
+                  "at grade C or better %s mm (reliable)\n",
                   head->name.c_str(), std::string(to_string(s.style)).c_str(), s.speed_mm_s,
-                  text(l.reliable, "%.4f").c_str(), text(l.extreme, "%.4f").c_str());
+                  text(l.reliable, "%.4f").c_str(), "FDCBA"[std::clamp(grade_at_smallest, 0, 4)],
+                  text(l.extreme, "%.4f").c_str(), text(c.reliable, "%.4f").c_str());
   }
 
   // Fastest speed for the 8 mm symbol, and time against speed.

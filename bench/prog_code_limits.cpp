@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
     ModuleStyle style;
     double speed_mm_s, from_mm, to_mm;
   } styles[] = {{ModuleStyle::square, 1000, 0.20, 0.04},
-                {ModuleStyle::line, 1000, 0.12, 0.02},
+                {ModuleStyle::line, 1000, 0.20, 0.02},
                 {ModuleStyle::dot, 1000, 0.40, 0.05},
                 {ModuleStyle::dot, 150, 0.40, 0.05}};
   for (const auto& s : styles) {

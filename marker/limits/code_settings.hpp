@@ -23,7 +23,7 @@ inline constexpr Choice kQrEcc{{"--qr-ecc", "qr_ecc", "QR error correction"}, "L
 inline constexpr Count kQrVersion{
     {"--qr-version", "qr_version", "QR version (0: the smallest that holds the data)"}, {0, 40}, 0};
 inline constexpr Choice kModuleStyle{
-    {"--style", "style", "code modules as square (hatched), dot, line"}, "square, dot, line", "square"};
+    {"--style", "style", "code modules as square (hatched), dot, line (rows of lines)"}, "square, dot, line", "square"};
 inline constexpr Choice kDotShape{{"--dot", "dot", "dot style"}, "spiral, circle", "spiral"};
 inline constexpr Quantity kDotSize{
     {"--dot-size", "dot_size", "dot diameter (outer edge of the burn) as a share of the module"},

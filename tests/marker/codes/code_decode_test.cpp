@@ -9,6 +9,7 @@
 #include "marker/codes/code_data.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/simulate_plan.hpp"
+#include "tests/marker/param_print.hpp"
 
 namespace mark {
 namespace {
@@ -25,6 +26,7 @@ struct Case {
   bool invert = false;
   int rows = 0, cols = 0;
 };
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
 struct Marked {
   PlacedCode code;
@@ -114,8 +116,10 @@ INSTANTIATE_TEST_SUITE_P(Codes, DataMatrixSizes,
 
 // Styles at settings where each is meant to be used: hatched squares at marking speed; dots slow
 // enough that the head's lag does not shrink their circles (ZBar reads dotted QR only from
-// 100 mm/s down: at 150 mm/s on SL14 it misses with every module right); lines for modules of
-// about one line width (0.05 mm at 200 mm/s, where a line marks 54 µm wide).
+// 100 mm/s down: at 150 mm/s on SL14 it misses with every module right); lines at marking speed,
+// from a beam radius inside each module row's edges at most the 0.035 mm hatch spacing apart:
+// two 40 µm lines on a 0.06 mm module (the square style's smallest too), nine on the common
+// 0.3 mm one (one line per module left both a striped grey that no reader decoded).
 class StylesAndHeads : public testing::TestWithParam<Case> {};
 TEST_P(StylesAndHeads, Decode) { expect_reads(GetParam()); }
 std::vector<Case> style_cases() {
@@ -125,7 +129,8 @@ std::vector<Case> style_cases() {
       const std::string base = head.name + "_" + std::string(s == Symbology::qr ? "qr" : "dm");
       out.push_back({base + "_square", s, "SN 2026-000123", 0.3, ModuleStyle::square, 1000, head});
       out.push_back({base + "_dot", s, "SN 2026-000123", 0.3, ModuleStyle::dot, 100, head});
-      out.push_back({base + "_line", s, "SN 2026-000123", 0.05, ModuleStyle::line, 200, head});
+      out.push_back({base + "_line", s, "SN 2026-000123", 0.06, ModuleStyle::line, 1000, head});
+      out.push_back({base + "_line_wide", s, "SN 2026-000123", 0.3, ModuleStyle::line, 1000, head});
     }
   return out;
 }

@@ -129,17 +129,38 @@ TEST(CodeMarks, DotsAreExactArcsAndSpiralsFillTheirDisc) {
     EXPECT_LT((spirals.elements[k].start() - spirals.elements[k - 1].end()).norm(), 1e-9);
 }
 
-TEST(CodeMarks, LineStyleDrawsOneLinePerRunOfEachRow) {
+TEST(CodeMarks, LineStyleCoversEachModuleRowWithLinesAtMostTheSpacingApart) {
   const ModuleMatrix m = encoded(Symbology::datamatrix, "SN 0042");
-  CodeLayout l;
-  l.module_mm = 0.05;
-  l.style = ModuleStyle::line;
-  const PlacedCode c = place_code(m, l);
   std::size_t runs = 0;
   for (int r = 0; r < m.rows; ++r)
     for (int col = 0; col < m.cols; ++col) runs += m.dark(r, col) && (col == 0 || !m.dark(r, col - 1));
-  EXPECT_EQ(c.stats.hatch_lines, runs);
-  check_marks_in_place(c);
+  CodeLayout l;
+  l.style = ModuleStyle::line;
+  // Beam radius r = 0.02, hatch spacing 0.035 mm: line centres from r to module − r, at most the
+  // spacing apart. A 0.04 mm module takes one line in its middle, 0.05 mm two (at 0.02 and 0.03),
+  // 0.3 mm 1 + ⌈0.26 / 0.035⌉ = 9.
+  for (const auto& [module_mm, per_module] : {std::pair{0.04, 1}, {0.05, 2}, {0.3, 9}}) {
+    SCOPED_TRACE(module_mm);
+    l.module_mm = module_mm;
+    const PlacedCode c = place_code(m, l);
+    EXPECT_EQ(c.stats.hatch_lines, runs * per_module);
+    check_marks_in_place(c);
+    std::set<long> offsets_nm;  // line centres across their module row, from its top edge
+    for (const Element& e : c.elements)
+      if (e.laser()) {
+        const double down = c.height_mm - (c.to_field.inverse() * e.start()).y();
+        offsets_nm.insert(std::lround(std::fmod(down + 1e-9, module_mm) * 1e6));
+      }
+    ASSERT_EQ(offsets_nm.size(), static_cast<std::size_t>(per_module));
+    if (per_module == 1) {
+      EXPECT_NEAR(*offsets_nm.begin(), module_mm / 2 * 1e6, 2);
+    } else {
+      EXPECT_NEAR(*offsets_nm.begin(), 0.02 * 1e6, 2);
+      EXPECT_NEAR(*offsets_nm.rbegin(), (module_mm - 0.02) * 1e6, 2);
+      const double pitch_nm = (module_mm - 0.04) * 1e6 / (per_module - 1);
+      EXPECT_LE(pitch_nm, 35000 + 1);
+    }
+  }
 }
 
 TEST(CodeMarks, ImpossibleLayoutsAreRefused) {

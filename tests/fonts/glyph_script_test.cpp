@@ -86,6 +86,7 @@ struct BadScript {
   const char* token;    // must appear in the message
   const char* problem;  // must appear in the message
 };
+void PrintTo(const BadScript& b, std::ostream* os) { *os << '"' << b.script << '"'; }
 
 class GlyphScriptErrors : public ::testing::TestWithParam<BadScript> {};
 

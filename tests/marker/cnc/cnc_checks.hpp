@@ -26,6 +26,8 @@ enum class Variant { upright, mirrored, sheared };
 const char* name(Dialect d);
 const char* name(Fit f);
 const char* name(Variant v);
+inline void PrintTo(Fit f, std::ostream* os) { *os << name(f); }
+inline void PrintTo(Variant v, std::ostream* os) { *os << name(v); }
 
 // Every dialect × fitting × variant, as the rs274 suites run them, with readable test names.
 using Case = std::tuple<Dialect, Fit, Variant>;
@@ -61,3 +63,8 @@ ProtrusionCheck check_protrusion(const Figure& fig, const Rs274Run& run, const C
                                  const ProtrusionResult& res);
 
 }  // namespace mark::test
+
+namespace mark {
+// Dialect lives in mark, so GoogleTest finds its printer there.
+inline void PrintTo(Dialect d, std::ostream* os) { *os << test::name(d); }
+}  // namespace mark

@@ -26,6 +26,9 @@ struct CircleCase {
   double blur_px;
   bool png;
 };
+void PrintTo(const CircleCase& c, std::ostream* os) {
+  *os << "radius " << c.radius_px << " px, blur " << c.blur_px << " px" << (c.png ? ", PNG" : "");
+}
 
 class IdealTool : public ::testing::TestWithParam<CircleCase> {};
 

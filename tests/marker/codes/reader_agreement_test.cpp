@@ -13,6 +13,7 @@
 #include "marker/codes/synthetic_aperture.hpp"
 #include "marker/codes/verify.hpp"
 #include "tests/marker/codes/ideal_picture.hpp"
+#include "tests/marker/param_print.hpp"
 
 namespace mark {
 namespace {
@@ -114,6 +115,7 @@ struct LinearCase {
   Symbology symbology;
   double angle_deg;
 };
+void PrintTo(const LinearCase& c, std::ostream* os) { *os << to_string(c.symbology) << " at " << c.angle_deg << " deg"; }
 class ReaderLinear : public testing::TestWithParam<LinearCase> {};
 TEST_P(ReaderLinear, PassesAtAnyAngle) {
   CodeSpec spec;

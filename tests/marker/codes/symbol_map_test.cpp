@@ -11,6 +11,7 @@
 
 #include "marker/codes/code_spec.hpp"
 #include "marker/codes/symbol_map.hpp"
+#include "tests/marker/param_print.hpp"
 
 namespace mark {
 namespace {

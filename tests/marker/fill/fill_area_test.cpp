@@ -18,6 +18,7 @@ struct Case {
   std::string font;
   double angle_deg;
 };
+void PrintTo(const Case& c, std::ostream* os) { *os << c.font << " at " << c.angle_deg << " deg"; }
 
 std::string name_of(const testing::TestParamInfo<Case>& info) {
   const std::string stem = info.param.font.find("DejaVu") != std::string::npos ? "DejaVuSans" : "LiberationSans";

@@ -12,6 +12,7 @@
 #include "marker/job/job_compiler.hpp"
 #include "marker/job/sim_evaluator.hpp"
 #include "tests/marker/recording_command_device.hpp"
+#include "tests/marker/param_print.hpp"
 
 namespace mark {
 namespace {

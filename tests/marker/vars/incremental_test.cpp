@@ -6,6 +6,7 @@
 #include "marker/job/head_pen.hpp"
 #include "marker/layout/layout.hpp"
 #include "marker/plan/replan.hpp"
+#include "tests/marker/param_print.hpp"
 
 namespace mark {
 namespace {

@@ -28,6 +28,15 @@ struct Plant {
   double resonance_zeta = 0.02;
   // The mirror's acceleration limit, mm/s² (0: the preset's).
   double accel_max_mm_s2 = 0;
+  // Back-EMF, mm/s (0: none): the speed at which the turning coil's back-EMF uses up the
+  // amplifier's voltage. Speeding up, the acceleration available falls as a_max·(1 − |v| / this);
+  // braking, the back-EMF helps and the current limit a_max holds.
+  double backemf_speed_mm_s = 0;
+  // Thermal (RMS current) limit: the drive trips, and the laser goes off for the rest of the job,
+  // when an axis's rms acceleration over the coil's thermal time constant (an exponential window)
+  // passes this share of its peak acceleration. 0 %: none.
+  double rms_accel_pct = 0;
+  double thermal_tau_s = 1;
   // Beam position noise: rms per axis, correlated over the servo's τ (an Ornstein–Uhlenbeck
   // process), from a generator seeded with `seed` at every job's start.
   double noise_um = 0;
@@ -39,7 +48,7 @@ struct Plant {
   // True when it adds nothing to the preset.
   bool is_model() const {
     return tau_scale == 1 && wn_scale == 1 && dead_us == 0 && latency_us == 0 && resonance_hz == 0 && accel_max_mm_s2 == 0 &&
-           noise_um == 0 && quant_bits == 0;
+           backemf_speed_mm_s == 0 && rms_accel_pct == 0 && noise_um == 0 && quant_bits == 0;
   }
 };
 

@@ -92,4 +92,19 @@ double BeamNoise::gauss() {
   return r * std::cos(2 * std::numbers::pi * u2);
 }
 
+CoilHeat::CoilHeat(double limit_share, double tau_s, double dt)
+    : limit_(limit_share), keep_(tau_s > 0 ? std::exp(-dt / tau_s) : 0) {}
+
+bool CoilHeat::step(Vec2 accel_share) {
+  const double sq[2] = {accel_share.x * accel_share.x, accel_share.y * accel_share.y};
+  bool over = false;
+  for (int i = 0; i < 2; ++i) {
+    mean_sq_[i] = sq[i] + (mean_sq_[i] - sq[i]) * keep_;
+    over = over || mean_sq_[i] > limit_ * limit_;
+  }
+  return over;
+}
+
+double CoilHeat::rms_share(int axis) const { return std::sqrt(mean_sq_[axis]); }
+
 }  // namespace mark

@@ -78,4 +78,26 @@ class BeamNoise {
   Vec2 n_{0, 0};
 };
 
+// The coils' heating: per axis the mean square of the shaft's acceleration over an exponential
+// window of the thermal time constant (exact over each sub-step for the sub-step's value), which
+// is the coil's i²R heat as a share of the heat at peak current. A drive trips when its root
+// passes the limit share of the peak acceleration.
+class CoilHeat {
+ public:
+  // limit_share 0: none.
+  CoilHeat(double limit_share, double tau_s, double dt);
+  bool active() const { return limit_ > 0; }
+  void reset() { mean_sq_[0] = mean_sq_[1] = 0; }
+  // The axes' accelerations over this sub-step as shares of their peak; true once an axis is
+  // past the limit.
+  bool step(Vec2 accel_share);
+  // An axis's rms acceleration as a share of its peak, now, and the axis that tripped (0 x, 1 y).
+  double rms_share(int axis) const;
+  int hottest_axis() const { return mean_sq_[1] > mean_sq_[0] ? 1 : 0; }
+
+ private:
+  double limit_ = 0, keep_ = 1;
+  double mean_sq_[2] = {0, 0};
+};
+
 }  // namespace mark

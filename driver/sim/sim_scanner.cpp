@@ -48,6 +48,7 @@ SimScanner::SimScanner(SimScannerOptions options)
       commands_(std::max(1, options_.substeps), std::max(0, substeps_of(options_.plant.latency_us, options_))),
       resonance_(options_.plant.resonance_hz, options_.plant.resonance_zeta, options_.tick_s / std::max(1, options_.substeps)),
       noise_(options_.plant.noise_um * 1e-3, servo_.tau_s, options_.tick_s / std::max(1, options_.substeps)),
+      heat_(options_.plant.rms_accel_pct / 100, options_.plant.thermal_tau_s, options_.tick_s / std::max(1, options_.substeps)),
       dose_(options_.pixel_mm),
       lifecycle_("sim " + options_.head.name) {
   const HeadModel& h = options_.head;
@@ -58,7 +59,7 @@ SimScanner::SimScanner(SimScannerOptions options)
                       " needs positive tau, speed and acceleration limits and field");
   const Plant& p = options_.plant;
   if (!(p.tau_scale > 0) || !(p.wn_scale > 0) || !(p.dead_us >= 0) || !(p.latency_us >= 0) || !(p.resonance_hz >= 0) ||
-      !(p.resonance_zeta > 0) || !(p.accel_max_mm_s2 >= 0) || !(p.noise_um >= 0) || p.quant_bits < 0 ||
+      !(p.resonance_zeta > 0) || !(p.accel_max_mm_s2 >= 0) || !(p.backemf_speed_mm_s >= 0) || !(p.rms_accel_pct >= 0) || !(p.thermal_tau_s > 0) || !(p.noise_um >= 0) || p.quant_bits < 0 ||
       p.quant_bits > 52)
     throw DeviceError("simulated scanner: head " + h.name + ": the plant needs positive scales and damping and "
                       "no negative dead time, resonance, acceleration, noise or bits");
@@ -94,6 +95,8 @@ void SimScanner::start_job() {
   dose_scale_ = laser_.power_pct / 100;
   pulses_.begin(laser_.frequency_khz, options_.head.spot_diameter_um);
   if (noise_.active()) noise_.start(options_.plant.seed);  // every job draws the same noise
+  heat_.reset();  // the cooling between jobs is not simulated: every job starts cold
+  overheated_ = false;
   samples_ = 0;
   was_lit_ = false;
   progress_.store(0, std::memory_order_relaxed);
@@ -243,6 +246,19 @@ void SimScanner::write(std::span<const ScanSample> block) {
       fail({FaultCategory::device, msg, samples_});
     }
     follow(s);
+    if (overheated_) {
+      const int axis = heat_.hottest_axis();
+      char msg[240];
+      std::snprintf(msg, sizeof msg,
+                    "simulated scanner (%s): the %c axis's rms acceleration reached %.1f %% of its peak "
+                    "over the %g s thermal time constant, past the drive's %g %% limit, at sample %llu; "
+                    "the drive tripped, laser halted",
+                    options_.head.name.c_str(), axis == 0 ? 'x' : 'y', 100 * heat_.rms_share(axis),
+                    options_.plant.thermal_tau_s, options_.plant.rms_accel_pct,
+                    static_cast<unsigned long long>(samples_ - 1));
+      trail_.flush();
+      fail({FaultCategory::device, msg, samples_ - 1});
+    }
   }
   trail_.flush();  // the raster is complete after every block
   publish_status();
@@ -279,32 +295,48 @@ void SimScanner::laser_off() noexcept {
 // With a dead time the servo acts on `seen`, the shaft as it was that long ago (without, `seen`
 // is `a`). A delayed loop has no exact matrix step: the second order is then stepped explicitly
 // (stable up to ζ ≈ 7.75 on SL10 at 1 µs, as before the exact step).
+// How far the shaft's speed may change over this sub-step, from v by dv towards what the servo
+// asks: the current limit a_max, less what back-EMF takes while speeding up. Without back-EMF,
+// ±a_max·dt exactly (the preset's arithmetic).
+double SimScanner::allowed_dv(const Axis& a, double dv, double dt) const {
+  const Plant& p = options_.plant;
+  double up = servo_.max_accel_mm_s2, down = -servo_.max_accel_mm_s2;
+  if (p.backemf_speed_mm_s > 0) {
+    const double left = std::max(0.0, 1 - std::abs(a.v) / p.backemf_speed_mm_s);
+    (a.v > 0 ? up : down) *= a.v != 0 ? left : 1.0;
+  }
+  return std::clamp(dv, down * dt, up * dt);
+}
+
 void SimScanner::step_axis(Axis& a, const Axis& seen, double cmd, double rate, double dt) const {
   const HeadModel& h = servo_;
   const double e = cmd - seen.x;
-  const double dv_max = h.max_accel_mm_s2 * dt;
+  const double v0 = a.v;
+  double want;  // the speed the servo asks for at the end of this sub-step
   if (h.second_order && dead_substeps_ > 0) {
     const double wn = h.omega_n();
-    a.v += std::clamp((wn * wn * e - 2 * h.zeta * wn * seen.v) * dt, -dv_max, dv_max);
+    want = a.v + (wn * wn * e - 2 * h.zeta * wn * seen.v) * dt;
   } else if (h.second_order) {
     // The loop's exact step (stable for every ζ); where it would ask more than the mirror's
     // acceleration or speed, the mirror moves as far towards it as the limits allow.
     double x1 = a.x, v1 = a.v;
     servo_step_.apply(x1, v1, cmd, rate);
-    if (std::abs(v1 - a.v) <= dv_max && std::abs(v1) <= h.max_speed_mm_s) {
+    if (allowed_dv(a, v1 - a.v, dt) == v1 - a.v && std::abs(v1) <= h.max_speed_mm_s) {
       a.x = x1;
       a.v = v1;
+      a.acc = (v1 - v0) / dt;
       return;
     }
-    a.v += std::clamp(v1 - a.v, -dv_max, dv_max);
+    want = v1;
   } else {
-    double want = e / h.tau_s;
+    want = e / h.tau_s;
     const double brake = std::sqrt(2 * h.max_accel_mm_s2 * std::abs(e));
     want = std::clamp(want, -brake, brake);
-    a.v += std::clamp(want - a.v, -dv_max, dv_max);
   }
+  a.v += allowed_dv(a, want - a.v, dt);
   a.v = std::clamp(a.v, -h.max_speed_mm_s, h.max_speed_mm_s);
   a.x += a.v * dt;
+  a.acc = (a.v - v0) / dt;
 }
 
 void SimScanner::follow(const ScanSample& s) {
@@ -343,6 +375,8 @@ void SimScanner::follow(const ScanSample& s) {
       step_axis(axis_[i], seen, i == 0 ? cmd.x : cmd.y, i == 0 ? rate.x : rate.y, dt);
     }
     if (dead_substeps_ > 0) dead_at_ = (dead_at_ + 1) % static_cast<std::size_t>(dead_substeps_);
+    if (heat_.active() && heat_.step((1 / servo_.max_accel_mm_s2) * Vec2{axis_[0].acc, axis_[1].acc}))
+      overheated_ = true;
     if (resonance_.active() || noise_.active()) {
       Vec2 off{0, 0};
       if (resonance_.active()) off = resonance_.step((1 / dt) * (beam_velocity_mm_s() - v0));

@@ -113,12 +113,14 @@ class SimScanner : public SampleDevice<ScanSample> {
   struct Axis {
     double x = 0;  // position, mm
     double v = 0;  // velocity, mm/s
+    double acc = 0;  // acceleration over the last sub-step, mm/s²
   };
   void start_job();
   void laser_off() noexcept;
   void check_block(std::span<const ScanSample> block) const;
   void follow(const ScanSample& s);
   void step_axis(Axis& a, const Axis& seen, double cmd, double rate, double dt) const;
+  double allowed_dv(const Axis& a, double dv, double dt) const;
   void record_lit(Vec2 p0, Vec2 p1, bool lit);
   [[noreturn]] void fail(DeviceFault fault);
   void publish_status();
@@ -135,6 +137,8 @@ class SimScanner : public SampleDevice<ScanSample> {
   std::size_t dead_at_ = 0;
   MirrorResonance resonance_;
   BeamNoise noise_;
+  CoilHeat heat_;            // the coils' heating (the plant's thermal limit)
+  bool overheated_ = false;  // set by follow(), turned into the drive's trip by write()
   Vec2 offset_{0, 0};           // the beam's offset from the shaft: twist + noise
   bool laser_cmd_ = false;
   double power_ = 0;         // effective laser power 0..1

@@ -16,6 +16,9 @@ inline const Range kPlantDeadRange{0, 1000, "µs"};  // dead time and latency
 inline const Range kPlantResonanceRange{100, 100000, "Hz", false, true};  // 0: none
 inline const Range kPlantResonanceZetaRange{0.001, 1, ""};
 inline const Range kPlantAccelRange{1e3, 1e10, "mm/s²", false, true};   // 0: the preset's
+inline const Range kPlantBackEmfRange{100, 1e6, "mm/s", false, true};     // 0: none
+inline const Range kPlantRmsAccelRange{1, 100, "%", false, true};        // 0: none
+inline const Range kPlantThermalTauRange{1e-4, 100, "s"};
 inline const Range kPlantNoiseRange{0, 100, "µm"};
 inline const Range kPlantSeedRange{0, 4294967295.0, ""};
 inline const Range kPlantQuantRange{8, 24, "bits", false, true};          // 0: exact

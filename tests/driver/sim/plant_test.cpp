@@ -3,7 +3,9 @@
 // by itself; wn_scale moves a second-order step's overshoot to e^{−πζ'/√(1−ζ'²)} of the scaled ζ;
 // the mirror resonance rings at its own frequency and dies by its damping and leaves a ramp
 // without lag; the acceleration limit caps the jump's acceleration; 16-bit quantisation lands a
-// held point on the field's code grid; noise has the rms asked for and repeats with its seed.
+// held point on the field's code grid; noise has the rms asked for and repeats with its seed;
+// back-EMF takes the acceleration away as v(t) = V·(1 − e^{−a·t/V}), and the thermal limit trips
+// the drive when the rms acceleration passes it.
 #include "driver/sim/plant.hpp"
 
 #include <gtest/gtest.h>
@@ -174,6 +176,73 @@ TEST(Plant, AccelerationLimitCapsAJump) {
     EXPECT_NEAR(most, a_max, 1e-3 * a_max) << a_max;
     EXPECT_NEAR(tr.p.back().x, 20, 1e-3);
   }
+}
+
+// The shaft's acceleration over each sub-step, from the probe's positions (x_i − x_{i−1} = v_i·dt
+// exactly when nothing displaces the beam).
+std::vector<double> accelerations(const Trace& tr) {
+  std::vector<double> a;
+  for (std::size_t i = 2; i < tr.p.size(); ++i) {
+    const double dt = tr.t[i] - tr.t[i - 1];
+    a.push_back(((tr.p[i].x - tr.p[i - 1].x) - (tr.p[i - 1].x - tr.p[i - 2].x)) / (dt * dt));
+  }
+  return a;
+}
+
+TEST(Plant, BackEmfTakesTheAccelerationAwayAsTheSpeedRises) {
+  // Speeding up at the current limit against back-EMF: v̇ = a·(1 − v / V), so from rest
+  // v(t) = V·(1 − e^{−a·t / V}); with a = 1e7 mm/s², V = 4000 mm/s half of V takes
+  // (V / a)·ln 2 = 277.3 µs. Braking keeps the full a.
+  Plant p;
+  p.accel_max_mm_s2 = 1e7;
+  p.backemf_speed_mm_s = 4000;
+  test::Stream s;
+  s.step_to({40, 0}, 2000);
+  const Trace tr = run(head_sl10(), p, s);
+  std::size_t start = 1;
+  while (start < tr.p.size() && tr.p[start].x == tr.p[start - 1].x) ++start;
+  double t_half = NAN, most_braking = 0;
+  for (std::size_t i = start + 1; i < tr.p.size(); ++i) {
+    const double v = (tr.p[i].x - tr.p[i - 1].x) / (tr.t[i] - tr.t[i - 1]);
+    if (std::isnan(t_half) && v >= 2000) t_half = tr.t[i] - tr.t[start - 1];
+  }
+  for (double a : accelerations(tr)) most_braking = std::min(most_braking, a);
+  EXPECT_NEAR(t_half, 4000 / 1e7 * std::log(2.0), 0.02 * 277.3e-6);
+  EXPECT_NEAR(most_braking, -1e7, 1e4);
+  EXPECT_NEAR(tr.p.back().x, 40, 1e-3);
+}
+
+TEST(Plant, ThermalLimitTripsTheDriveWhenTheRmsAccelerationPassesIt) {
+  // A 20 mm jump accelerates at the limit from its first sub-steps: the mean square over an
+  // exponential window τ_th is 1 − e^{−t/τ_th} of the peak's, so a 50 % rms limit trips at
+  // t = τ_th·ln(4/3) = 287.7 µs with τ_th = 1 ms (sample 28 or 29 of 10 µs).
+  Plant p;
+  p.accel_max_mm_s2 = 1e7;
+  p.rms_accel_pct = 50;
+  p.thermal_tau_s = 1e-3;
+  test::Stream s;
+  s.step_to({20, 0}, 600);
+  SimScannerOptions o;
+  o.head = head_sl10();
+  o.plant = p;
+  o.record_lit_paths = false;
+  SimScanner sim(o);
+  try {
+    sim.write(s.samples());
+    FAIL() << "the drive did not trip";
+  } catch (const DeviceFaultError& e) {
+    EXPECT_EQ(e.fault().category, FaultCategory::device);
+    EXPECT_NEAR(static_cast<double>(e.fault().at), 28.8, 1.0);
+    EXPECT_NE(e.fault().message.find("x axis's rms acceleration reached 50."), std::string::npos) << e.fault().message;
+    EXPECT_NE(e.fault().message.find("tripped, laser halted"), std::string::npos);
+  }
+  EXPECT_TRUE(sim.halted());
+  EXPECT_EQ(sim.laser_power(), 0);
+  // A short jump (0.1 mm: 200 µs at full acceleration) under a 1 s time constant stays far below.
+  p.thermal_tau_s = 1;
+  test::Stream short_jump;
+  short_jump.step_to({0.1, 0}, 600);
+  EXPECT_NO_THROW(run(head_sl10(), p, short_jump));
 }
 
 TEST(Plant, SixteenBitCommandsLandOnTheCodeGrid) {

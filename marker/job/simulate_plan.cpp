@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "driver/sim/head_model.hpp"
 #include "marker/job/sim_evaluator.hpp"
 #include "marker/locus/locus_generator.hpp"
 #include "ringbuffer/laser_delay_line.hpp"
@@ -32,6 +33,11 @@ SimulatedMark simulate_plan(const Plan& plan, SimScanner& scanner) {
 SimScannerOptions simulator_options(const HeadModel& head, const Pen& pen) {
   SimScannerOptions o;
   o.head = head;
+  // A preset scans its own field: a job's field larger than that (--field, a job file's
+  // field_mm) is the job's, not the head's, so the device refuses it rather than marking as if
+  // the head reached that far.
+  if (const auto preset = find_head(head.name); preset && head.field_mm > preset->field_mm)
+    o.head.field_mm = preset->field_mm;
   o.tick_s = pen.tick_s;
   o.record_lit_paths = true;
   return o;

@@ -60,6 +60,11 @@ TEST(CliRefusal, LayoutOptionsOutsideTheirRanges) {
       {{"layout", "X", "--field", "0"}, "--field: 0 is outside the range 1 to 10000 mm"},
       {{"layout", "X", "--x", "60"}, "--x: 60 is outside the range -55 to 55 mm (the --field is 110 mm)"},
       {{"layout", "X", "--y", "-30", "--field", "50"}, "--y: -30 is outside the range -25 to 25 mm (the --field is 50 mm)"},
+      // The simulated SL10 is a 110 mm head: a larger field is refused, not marked as if it reached.
+      {{"mark", "X", "--field", "300"},
+       "the job's field, 300 mm (--field, a job's field_mm), is larger than the 110 mm field of device sim SL10; give at most 110"},
+      {{"code", "datamatrix", "X", "--field", "110.5"},
+       "the job's field, 110.5 mm (--field, a job's field_mm), is larger than the 110 mm field of device sim SL10; give at most 110"},
       {{"layout", "X", "--circle", "0,0,1e300"},
        "--circle '0,0,1e300' radius: 1e+300 is outside the range above 0, up to 10000 mm"},
       {{"layout", "X", "--circle", "0,inf,10"},

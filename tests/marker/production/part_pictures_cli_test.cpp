@@ -14,6 +14,7 @@
 
 #include "marker/image/gray_image.hpp"
 #include "tests/marker/cli_runner.hpp"
+#include "tests/marker/production/plates_job.hpp"
 
 namespace mark {
 namespace {
@@ -287,14 +288,8 @@ TEST_F(PartPicturesCli, JobCheckPreviewDrawsTheStoresNextPartWithoutConsumingIt)
 // With a data list the next part is the store's next untaken row, not the list's first: a part
 // marked takes row 1 ("VIN-A"), and `job check --preview` then shows row 2's text and says so.
 TEST_F(PartPicturesCli, JobCheckPreviewTakesTheStoresNextDataListRow) {
-  std::ofstream(dir / "plates.csv") << "vin\nVIN-A\nVIN-B\n";
-  std::ofstream(job) << R"({
-    "format": "marker-job/1", "head": "SL10", "time_zone": "UTC",
-    "data": {"file": "plates.csv"},
-    "counters": {"serial": {"start": 41, "width": 6}},
-    "pens": {"fine": {"speed_mm_s": 800, "power_pct": 100, "frequency_khz": 40}},
-    "objects": [{"name": "sn", "pen": "fine", "template": "{col:vin} {serial}", "height_mm": 3, "x_mm": -10, "y_mm": 0}]
-  })";
+  test::write_plates_list(dir);
+  std::ofstream(job) << test::kPlatesJob;
   const auto first = run_cli({"job", "check", job, "--preview", path("c1.png"), "--json"});
   ASSERT_EQ(first.code, 0) << first.err;
   EXPECT_EQ(nlohmann::json::parse(first.out)["objects"][0]["text"], "VIN-A 000041");

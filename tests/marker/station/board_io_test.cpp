@@ -126,16 +126,8 @@ struct BoardStation {
 
   explicit BoardStation(bool virtual_time, double debounce_ms = 2, double min_pulse_ms = 2,
                         const std::string& signal = "ready=4,busy=5,done=6,error=7") {
-    const std::string job = (dir / "line.json").string();
-    std::ofstream(job) << test::kStationJob;
-    cli::MarkJobArgs a;
-    a.job = job;
-    a.store.store = (dir / "line.serials.sqlite").string();
-    a.station = "s1";
-    a.create_counters = true;
-    a.virtual_time = virtual_time;
-    a.device = "lmc-emulated";
-    source = std::make_unique<cli::JobSource>(a);
+    source = std::make_unique<cli::JobSource>(test::station_job_args(
+        dir, "line.json", test::kStationJob, (dir / "line.serials.sqlite").string(), "lmc-emulated", virtual_time));
     station = std::make_unique<Station>(*source);
     cli::BoardIoArgs b{"lmc-input:3", signal, debounce_ms, min_pulse_ms};
     io = cli::open_board_io(*station, source->device(), *cli::parse_board_io(b), [this](const std::string& l) {
@@ -288,15 +280,8 @@ TEST(BoardIoStation, AFaultSetsTheErrorOutputWithTheLaserOff) {
 
 TEST(BoardIoStation, ASignalOnTheLaserBitOrAnotherDeviceIsRefused) {
   auto dir = test::fresh_store_dir("boardio-refuse");
-  const std::string job = (dir / "line.json").string();
-  std::ofstream(job) << test::kStationJob;
-  cli::MarkJobArgs a;
-  a.job = job;
-  a.store.store = (dir / "s.sqlite").string();
-  a.station = "s1";
-  a.create_counters = true;
-  a.virtual_time = true;
-  a.device = "lmc-emulated";
+  cli::MarkJobArgs a =
+      test::station_job_args(dir, "line.json", test::kStationJob, (dir / "s.sqlite").string(), "lmc-emulated");
   {
     cli::JobSource source(a);
     Station station(source);

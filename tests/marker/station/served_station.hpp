@@ -77,6 +77,23 @@ class LineClient {
   std::string buf_;
 };
 
+// The job source of an in-process station: `job_text` written to DIR/NAME, the serial store
+// beside it, station s1 creating its counters on first use, in virtual time unless told.
+inline cli::MarkJobArgs station_job_args(const std::filesystem::path& dir, const std::string& name,
+                                         const std::string& job_text, const std::string& store_path,
+                                         const std::string& device, bool virtual_time = true) {
+  const std::string job = (dir / name).string();
+  std::ofstream(job) << job_text;
+  cli::MarkJobArgs a;
+  a.job = job;
+  a.store.store = store_path;
+  a.station = "s1";
+  a.create_counters = true;
+  a.virtual_time = virtual_time;
+  a.device = device;
+  return a;
+}
+
 struct Served {
   std::filesystem::path dir = fresh_store_dir("station");
   std::string store_path = (dir / "line.serials.sqlite").string();
@@ -92,15 +109,7 @@ struct Served {
   // serve --token's (empty: none), for the TCP and HTTP servers.
   explicit Served(bool virtual_time = true, int max_connections = 8, const std::string& inject = {},
                   const std::string& token = {}) {
-    const std::string job = (dir / "line.json").string();
-    std::ofstream(job) << kStationJob;
-    cli::MarkJobArgs a;
-    a.job = job;
-    a.store.store = store_path;
-    a.station = "s1";
-    a.create_counters = true;
-    a.virtual_time = virtual_time;
-    a.device = "sim";
+    cli::MarkJobArgs a = station_job_args(dir, "line.json", kStationJob, store_path, "sim", virtual_time);
     a.inject = inject;
     source = std::make_unique<cli::JobSource>(a);
     station = std::make_unique<Station>(*source);

@@ -11,6 +11,7 @@
 #include "base/error.hpp"
 #include "marker/station/station_commands.hpp"
 #include "tests/marker/station/served_station.hpp"
+#include "tests/marker/production/plates_job.hpp"
 
 namespace mark {
 namespace {
@@ -129,22 +130,10 @@ namespace {
 // after a part took row 1; once every row is taken it says the next part would be refused.
 TEST(StationTcp, PreviewShowsTheDataListRowTheNextPartTakes) {
   const auto dir = test::fresh_store_dir("station-data");
-  std::ofstream(dir / "plates.csv") << "vin\nVIN-A\nVIN-B\n";
-  std::ofstream(dir / "plates.json") << R"({
-    "format": "marker-job/1", "head": "SL10", "time_zone": "UTC",
-    "data": {"file": "plates.csv"},
-    "counters": {"serial": {"start": 41, "width": 6}},
-    "pens": {"fine": {"speed_mm_s": 800, "power_pct": 100, "frequency_khz": 40}},
-    "objects": [{"name": "sn", "pen": "fine", "template": "{col:vin} {serial}", "height_mm": 3, "x_mm": -10, "y_mm": 0}]
-  })";
+  test::write_plates_list(dir);
   {
-    cli::MarkJobArgs a;
-    a.job = (dir / "plates.json").string();
-    a.store.store = (dir / "plates.sqlite").string();
-    a.station = "s1";
-    a.create_counters = true;
-    a.virtual_time = true;
-    a.device = "sim";
+    const cli::MarkJobArgs a = test::station_job_args(dir, "plates.json", test::kPlatesJob,
+                                                      (dir / "plates.sqlite").string(), "sim");
     cli::JobSource source(a);
     Station station(source);
     const auto preview = [&] { return station_command(station, "PREVIEW"); };

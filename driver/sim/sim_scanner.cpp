@@ -286,6 +286,22 @@ void SimScanner::laser_off() noexcept {
   laser_on_.store(false, std::memory_order_release);
 }
 
+// How far the shaft's speed may change over this sub-step, from v by dv towards what the servo
+// asks: the current limit a_max, less what back-EMF takes while speeding up. Without back-EMF,
+// ±a_max·dt exactly (the preset's arithmetic).
+double SimScanner::allowed_dv(const Axis& a, double dv, double dt) const {
+  const Plant& p = options_.plant;
+  double up = servo_.max_accel_mm_s2, down = -servo_.max_accel_mm_s2;
+  if (p.backemf_speed_mm_s > 0 && a.v != 0) {
+    const double left = std::max(0.0, 1 - std::abs(a.v) / p.backemf_speed_mm_s);
+    if (a.v > 0)
+      up *= left;
+    else
+      down *= left;
+  }
+  return std::clamp(dv, down * dt, up * dt);
+}
+
 // One sub-step of one axis: the servo asks for the velocity that closes the tracking error in
 // τ (first order, the command held over the sub-step) or the step of the (ωn, ζ) loop (second
 // order, exact for the command moving at `rate`: second_order_step.hpp); the mirror can
@@ -295,19 +311,6 @@ void SimScanner::laser_off() noexcept {
 // With a dead time the servo acts on `seen`, the shaft as it was that long ago (without, `seen`
 // is `a`). A delayed loop has no exact matrix step: the second order is then stepped explicitly
 // (stable up to ζ ≈ 7.75 on SL10 at 1 µs, as before the exact step).
-// How far the shaft's speed may change over this sub-step, from v by dv towards what the servo
-// asks: the current limit a_max, less what back-EMF takes while speeding up. Without back-EMF,
-// ±a_max·dt exactly (the preset's arithmetic).
-double SimScanner::allowed_dv(const Axis& a, double dv, double dt) const {
-  const Plant& p = options_.plant;
-  double up = servo_.max_accel_mm_s2, down = -servo_.max_accel_mm_s2;
-  if (p.backemf_speed_mm_s > 0) {
-    const double left = std::max(0.0, 1 - std::abs(a.v) / p.backemf_speed_mm_s);
-    (a.v > 0 ? up : down) *= a.v != 0 ? left : 1.0;
-  }
-  return std::clamp(dv, down * dt, up * dt);
-}
-
 void SimScanner::step_axis(Axis& a, const Axis& seen, double cmd, double rate, double dt) const {
   const HeadModel& h = servo_;
   const double e = cmd - seen.x;

@@ -12,7 +12,6 @@
 #include "marker/job/job_compiler.hpp"
 #include "marker/job/job_run.hpp"
 #include "marker/job/mark_evaluator.hpp"
-#include "marker/limits/value_range.hpp"
 #include "marker/locus/locus_generator.hpp"
 
 namespace mark {
@@ -114,10 +113,7 @@ JobResult run_on_device(const JobSpec& spec, CompiledJob job, double compiled_s,
     throw InputError(std::string("the job was compiled for a ") + kind(job.level) + " device; " +
                      desc.name + " is " + kind(desc.level));
   result.job = std::move(job);
-  if (spec.head.field_mm > desc.field_mm * (1 + 1e-12))
-    throw InputError("the job's field, " + format_number(spec.head.field_mm) + " mm (--field, a job's field_mm), is larger than the " +
-                     format_number(desc.field_mm) + " mm field of device " + desc.name + "; give at most " +
-                     format_number(desc.field_mm));
+  check_field(spec.head, desc);
   // A station reuses its device: one left done / aborted / failed by the last job is re-armed.
   const DeviceState state = device.status().state;
   if (state != DeviceState::idle && state != DeviceState::running) device.reset();

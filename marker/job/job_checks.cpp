@@ -5,6 +5,7 @@
 
 #include "base/error.hpp"
 #include "marker/layout/layout.hpp"
+#include "marker/limits/value_range.hpp"
 
 namespace mark {
 namespace {
@@ -64,6 +65,13 @@ void check_plan(const Plan& plan, const HeadModel& head) {
                  plan.pen.corner == CornerStrategy::blanking
                      ? "the job (figure plus blanking lines)"
                      : "the job (figure plus jumps)");
+}
+
+void check_field(const HeadModel& head, const DeviceDescription& device) {
+  if (head.field_mm > device.field_mm * (1 + 1e-12))
+    throw InputError("the job's field, " + format_number(head.field_mm) + " mm (--field, a job's field_mm), is larger than the " +
+                     format_number(device.field_mm) + " mm field of device " + device.name + "; give at most " +
+                     format_number(device.field_mm));
 }
 
 }  // namespace mark

@@ -5,6 +5,7 @@
 
 #include "base/error.hpp"
 #include "driver/sim/quality_class.hpp"
+#include "marker/job/job_checks.hpp"
 #include "marker/production/object_clearance.hpp"
 #include "marker/production/part_json.hpp"
 #include "marker/production/part_verdict.hpp"
@@ -40,6 +41,7 @@ PartRunner::PartRunner(const JobFile& job, const JobFonts& fonts,
   for (std::size_t i = 0; i < job.objects.size(); ++i) {
     const JobObject& o = job.objects[i];
     JobSpec spec = object_spec(job, o, "", fonts);
+    check_field(spec.head, desc);  // before any serial is taken, not as a part that could not start
     // A sample-level device runs on one sample clock: every pen's tick must be it.
     if (desc.level == DeviceLevel::samples && std::abs(spec.pen.tick_s - desc.tick_s) > 1e-12) {
       char msg[240];

@@ -155,6 +155,23 @@ TEST_F(MarkJobCli, AFailingDeviceIsRecordedFailed) {
   EXPECT_EQ(serial()["next"], 42);
 }
 
+// A job whose field is larger than its head's is refused before any serial is taken: not marked
+// as if the 110 mm SL10 reached 300 mm, and not a part recorded failed with a serial used up.
+TEST_F(MarkJobCli, AFieldLargerThanTheHeadsIsRefusedBeforeASerialIsTaken) {
+  nlohmann::json j;
+  std::ifstream(job) >> j;
+  j["field_mm"] = 300;
+  std::ofstream(job) << j.dump(2);
+  const auto r = mark({"--count", "2"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("the job's field, 300 mm (--field, a job's field_mm), is larger than the 110 mm field of "
+                       "device sim SL10; give at most 110"),
+            std::string::npos)
+      << r.err;
+  EXPECT_TRUE(log().empty());
+  EXPECT_EQ(serial()["next"], 41);
+}
+
 // A station's job names its board: `job new --device`, and `mark --job` marks every part on it
 // (here the capture board, which writes the bytes instead of sending them): one list per part,
 // each with that part's own serial.

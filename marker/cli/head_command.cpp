@@ -2,57 +2,194 @@
 //  [--json]`: runs the head response test (steps, ramps, a chirp, large steps) on the simulated
 // head, fits its servo model and limits from the recorded positions alone, and saves them as a
 // head profile (docs/speed.md) that the planner feeds forward.
+//
+// For a head that reports no position, from a picture of a mark instead (docs/speed.md,
+// "Identification from a picture"):
+//   `marker head test-pattern [--head …] [--plant …] [-o pattern.json] [--picture scan.png]`
+//   marks the lag test pattern (marker/head/lag_pattern.hpp) on the simulated head and writes
+//   the pattern file and its scan;
+//   `marker head identify --from-image scan.png --pixel-um P --pattern pattern.json` fits the
+//   ramp lag from the picture and saves it as a first-order profile, the limits the --head
+//   preset's (a picture does not show them).
 #include <cstdio>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
+#include "base/error.hpp"
+#include "driver/sim/grey_png.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/head_options.hpp"
+#include "marker/cli/option_ranges.hpp"
 #include "marker/cli/output_options.hpp"
+#include "marker/cli/plant_option.hpp"
 #include "marker/head/head_fit.hpp"
+#include "marker/head/lag_fit.hpp"
+#include "marker/head/lag_photo.hpp"
+#include "marker/limits/head_settings.hpp"
 #include "marker/output/output_file.hpp"
 
 namespace mark::cli {
+namespace {
+
+struct IdentifyArgs {
+  HeadArgs head;
+  std::string output;
+  bool json = false;
+  std::string from_image, pattern;
+  std::optional<double> pixel_um;
+};
+
+int identify_from_response(const IdentifyArgs& a) {
+  SimScannerOptions sim;
+  sim.head = simulated_head(a.head);
+  const std::string path = a.output.empty() ? "head-" + sim.head.name + ".json" : a.output;
+  check_standard_output({{"--output", &path}}, a.json);
+  check_output_path("--output", path);
+  const HeadProfile p = identify_head(sim);
+  save_head_profile(p, path);
+  if (a.json) {
+    std::cout << head_profile_json(p);
+    return 0;
+  }
+  std::printf("head %s: identified from its response to steps, ramps, a chirp and large steps\n",
+              p.head.c_str());
+  std::printf("first order:  tau %.4f ms (fit rms %.4f µm)\n", p.tau_s * 1e3, p.fit_rms_first_um);
+  std::printf("second order: omega_n %.0f rad/s, zeta %.3f, ramp lag %.4f ms (fit rms %.4f µm)\n",
+              p.omega_n_rad_s, p.zeta, 2 * p.zeta / p.omega_n_rad_s * 1e3, p.fit_rms_second_um);
+  std::printf("model: %s order; limits: speed %.0f mm/s, acceleration %.3g mm/s²\n",
+              std::string(to_string(p.model)).c_str(), p.max_speed_mm_s, p.max_accel_mm_s2);
+  std::printf("wrote %s\n", path.c_str());
+  return 0;
+}
+
+int identify_from_image(const IdentifyArgs& a) {
+  if (a.pattern.empty()) throw InputError("--from-image needs --pattern FILE (the pattern file test-pattern wrote)");
+  if (!a.pixel_um) throw InputError("--from-image needs --pixel-um (the picture's pixel on the part, µm)");
+  if (!a.head.model.empty() || a.head.zeta)
+    throw InputError("--head-model and --head-zeta do not apply with --from-image: a picture gives the ramp "
+                     "lag, which the profile keeps as a first-order τ");
+  const HeadModel head = simulated_head(a.head);
+  const std::string path = a.output.empty() ? "head-" + head.name + ".json" : a.output;
+  check_standard_output({{"--output", &path}}, a.json);
+  check_output_path("--output", path);
+  const LagPattern pattern = load_lag_pattern(a.pattern);
+  const GrayImage picture = read_gray_image(a.from_image);
+  const LagFit fit = fit_lag_from_image(picture, *a.pixel_um / 1000, pattern, a.from_image);
+
+  HeadProfile p = datasheet_profile(head);
+  p.model = ServoOrder::first;
+  p.tau_s = fit.tau_s;
+  p.fit_rms_first_um = fit.rms_um;
+  p.fit_rms_second_um = 0;
+  p.source = "image";
+  save_head_profile(p, path);
+  if (a.json) {
+    nlohmann::ordered_json j;
+    j["picture"] = a.from_image;
+    j["pattern"] = a.pattern;
+    j["pixel_um"] = *a.pixel_um;
+    j["tau_s"] = fit.tau_s;
+    j["tau_x_s"] = fit.tau_x_s;
+    j["tau_y_s"] = fit.tau_y_s;
+    j["fit_rms_um"] = fit.rms_um;
+    for (const LagPairFigure& f : fit.pairs)
+      j["pairs"].push_back({{"axis", f.axis == 0 ? "x" : "y"},
+                            {"speed_mm_s", f.speed_mm_s},
+                            {"ends_apart_mm", f.ends_apart_mm},
+                            {"residual_um", f.residual_um}});
+    j["profile"] = path;
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  std::printf("head %s: ramp lag fitted from %s (%g µm pixels), %zu line pairs\n", p.head.c_str(),
+              a.from_image.c_str(), *a.pixel_um, fit.pairs.size());
+  std::printf("tau %.4f ms (x %.4f ms, y %.4f ms), fit rms %.2f µm\n", fit.tau_s * 1e3, fit.tau_x_s * 1e3,
+              fit.tau_y_s * 1e3, fit.rms_um);
+  std::printf("model: first order; limits (the preset's, not measured): speed %.0f mm/s, acceleration %.3g mm/s²\n",
+              p.max_speed_mm_s, p.max_accel_mm_s2);
+  std::printf("wrote %s\n", path.c_str());
+  return 0;
+}
+
+struct PatternArgs {
+  HeadArgs head;
+  std::string output = "lag-pattern.json";
+  std::string picture = "lag-pattern.png";
+  bool json = false;
+};
+
+int test_pattern(const PatternArgs& a) {
+  check_standard_output({{"--output", &a.output}, {"--picture", &a.picture}}, a.json);
+  check_output_path("--output", a.output, {".json"});
+  check_output_path("--picture", a.picture, {".png"});
+  SimScannerOptions sim;
+  sim.head = simulated_head(a.head);
+  sim.laser_rise_s = a.head.laser_rise_us * 1e-6;
+  sim.plant = parse_plant_option(a.head.plant);
+  const LagPattern pattern = lag_pattern(sim.head);
+  const GreyImage picture = photograph_lag_pattern(sim, pattern);
+  write_file_whole(a.output, lag_pattern_json(pattern));
+  write_file_whole(a.picture, encode_grey_png(picture));
+  const Vec2 lo = pattern.min(), hi = pattern.max();
+  if (a.json) {
+    nlohmann::ordered_json j;
+    j["head"] = sim.head.name;
+    j["pattern"] = a.output;
+    j["picture"] = a.picture;
+    j["pixel_um"] = picture.pixel_mm * 1e3;
+    j["width_px"] = picture.width;
+    j["height_px"] = picture.height;
+    j["lines"] = pattern.lines.size();
+    j["speeds_mm_s"] = pattern.speeds_mm_s;
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  std::printf("head %s: lag pattern of %zu lines (%g × %g mm), every delay zero, marked on the simulator\n",
+              sim.head.name.c_str(), pattern.lines.size(), hi.x - lo.x, hi.y - lo.y);
+  std::printf("wrote %s and %s (%d × %d px of %g µm); fit it with\n", a.output.c_str(), a.picture.c_str(),
+              picture.width, picture.height, picture.pixel_mm * 1e3);
+  std::printf("  marker head identify --from-image %s --pixel-um %g --pattern %s --head %s\n", a.picture.c_str(),
+              picture.pixel_mm * 1e3, a.output.c_str(), sim.head.name.c_str());
+  return 0;
+}
+
+}  // namespace
 
 Command make_head_command() {
-  struct Args {
-    HeadArgs head;
-    std::string output;
-    bool json = false;
-  };
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<IdentifyArgs>();
+  auto t = std::make_shared<PatternArgs>();
+  auto pattern_app = std::make_shared<CLI::App*>(nullptr);
   return Command(
-      [a](CLI::App& app) {
+      [a, t, pattern_app](CLI::App& app) {
         auto* head = app.add_subcommand("head", "scan-head tools");
         head->require_subcommand(1);
         auto* sub = head->add_subcommand(
-            "identify", "measure the simulated head's response and save its head profile");
+            "identify", "measure the simulated head's response (or fit a picture of the lag pattern) and save its head profile");
         add_head_options(*sub, a->head, false);
         sub->add_option("-o,--output", a->output,
                         "head profile file to write (default: head-<NAME>.json)");
-        sub->add_flag("--json", a->json, "print the profile as JSON instead of a summary");
-        return sub;
+        sub->add_flag("--json", a->json, "print the profile (or the picture's fit) as JSON instead of a summary");
+        sub->add_option("--from-image", a->from_image,
+                        "a picture (PNG or PGM) of the lag pattern as marked: fit the lag from it")
+            ->check(CLI::ExistingFile);
+        sub->add_option("--pattern", a->pattern, "the pattern file `head test-pattern` wrote")
+            ->check(CLI::ExistingFile);
+        add_setting(*sub, kPicturePixel, a->pixel_um);
+        auto* pat = head->add_subcommand(
+            "test-pattern", "mark the lag test pattern on the simulated head and write its pattern file and scan");
+        add_head_options(*pat, t->head, true);
+        pat->add_option("-o,--output", t->output, "pattern file to write (.json; default lag-pattern.json)");
+        pat->add_option("--picture", t->picture, "the scan of the marked pattern to write (.png; default lag-pattern.png)");
+        pat->add_flag("--json", t->json, "print a summary as JSON");
+        *pattern_app = pat;
+        return head;
       },
-      [a] {
-        SimScannerOptions sim;
-        sim.head = simulated_head(a->head);
-        const std::string path = a->output.empty() ? "head-" + sim.head.name + ".json" : a->output;
-        check_standard_output({{"--output", &path}}, a->json);
-        check_output_path("--output", path);
-        const HeadProfile p = identify_head(sim);
-        save_head_profile(p, path);
-        if (a->json) {
-          std::cout << head_profile_json(p);
-          return 0;
-        }
-        std::printf("head %s: identified from its response to steps, ramps, a chirp and large steps\n",
-                    p.head.c_str());
-        std::printf("first order:  tau %.4f ms (fit rms %.4f µm)\n", p.tau_s * 1e3, p.fit_rms_first_um);
-        std::printf("second order: omega_n %.0f rad/s, zeta %.3f, ramp lag %.4f ms (fit rms %.4f µm)\n",
-                    p.omega_n_rad_s, p.zeta, 2 * p.zeta / p.omega_n_rad_s * 1e3, p.fit_rms_second_um);
-        std::printf("model: %s order; limits: speed %.0f mm/s, acceleration %.3g mm/s²\n",
-                    std::string(to_string(p.model)).c_str(), p.max_speed_mm_s, p.max_accel_mm_s2);
-        std::printf("wrote %s\n", path.c_str());
-        return 0;
+      [a, t, pattern_app] {
+        if ((*pattern_app)->parsed()) return test_pattern(*t);
+        if (!a->from_image.empty()) return identify_from_image(*a);
+        if (!a->pattern.empty() || a->pixel_um)
+          throw InputError("--pattern and --pixel-um go with --from-image");
+        return identify_from_response(*a);
       });
 }
 

@@ -35,7 +35,14 @@ inline constexpr Quantity kField{
     {"--field", "field_mm", "field size (square; a scan head's at most its own field)"},
     {1, 10000, "mm"}, 110, "110; a job file: the head's (110)"};
 
-inline constexpr SettingRef kHeadSettingList[] = {&kHead, &kHeadModel, &kHeadZeta, &kLaserRise, &kPlant, &kSpot, &kField};
+// `head identify --from-image`: the picture's pixel on the part, from a microscope camera
+// (0.1 µm) to a coarse scan (1 mm per pixel shows no lag at all, but says so in the fit).
+inline constexpr Quantity kPicturePixel{
+    {"--pixel-um", "", "head identify --from-image: the picture's pixel on the part"},
+    {0.1, 1000, "µm"}, {}, "required with --from-image"};
+
+inline constexpr SettingRef kHeadSettingList[] = {&kHead, &kHeadModel, &kHeadZeta, &kLaserRise,
+                                                  &kPlant, &kSpot, &kField, &kPicturePixel};
 inline constexpr SettingTable kHeadSettings{"head", "Head", "", kHeadSettingList};
 
 }  // namespace mark

@@ -1,7 +1,9 @@
-// libFuzzer target for parse_head_profile: it either throws InputError (a bad file, reported
-// with its key and range) or returns a profile the planner can trust — the chosen model's time
-// constants and both limits finite and positive, its ramp lag positive. Anything else (a crash,
-// a sanitizer report, another exception, a broken invariant) is a bug.
+// libFuzzer target for the head's files, each input read as both: parse_head_profile either
+// throws InputError (a bad file, reported with its key and range) or returns a profile the
+// planner can trust — the chosen model's time constants and both limits finite and positive, its
+// ramp lag positive; parse_lag_pattern either throws InputError or returns a pattern of four
+// lines per speed, every end finite. Anything else (a crash, a sanitizer report, another
+// exception, a broken invariant) is a bug.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -10,6 +12,7 @@
 
 #include "base/error.hpp"
 #include "marker/head/head_profile.hpp"
+#include "marker/head/lag_pattern.hpp"
 
 namespace {
 
@@ -30,6 +33,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!std::isfinite(p.inertia_s2()) || p.inertia_s2() < 0) broken("inverse-filter term invalid");
     if (!positive(p.max_speed_mm_s) || !positive(p.max_accel_mm_s2)) broken("limits not positive");
     if (!positive(p.field_mm) || !positive(p.tick_s)) broken("field or tick not positive");
+  } catch (const mark::InputError&) {
+  }
+  try {
+    const mark::LagPattern p = mark::parse_lag_pattern(text, "fuzz.json");
+    if (p.lines.size() != 4 * p.speeds_mm_s.size()) broken("not four lines per speed");
+    for (const mark::LagLine& l : p.lines)
+      if (!std::isfinite(l.start.x) || !std::isfinite(l.start.y) || !std::isfinite(l.end.x) ||
+          !std::isfinite(l.end.y) || !positive(l.speed_mm_s))
+        broken("a line's end or speed is not finite");
   } catch (const mark::InputError&) {
   }
   return 0;

@@ -60,7 +60,8 @@ const std::set<std::string> kNotSettings = {
     "--job", "--store", "--mask", "--tool-image",           // files and stores read
     "--inject",                                             // faults injected into a run (tests, drills)
     "--compare", "--no-serial", "--quiet",                  // what a report includes
-    "--cleanup-output", "--camera-png",                     // more files written
+    "--cleanup-output", "--camera-png", "--picture",        // more files written
+    "--pattern", "--from-image",                            // more files read
     "--markdown",                                           // how `marker options` prints
 };
 

@@ -1,0 +1,198 @@
+#include "marker/head/lag_fit.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+#include "base/error.hpp"
+
+namespace mark {
+namespace {
+
+// Otsu's threshold over 256 bins of 0..1: the level that best splits the picture in two.
+double otsu_threshold(const GrayImage& g) {
+  std::array<double, 256> hist{};
+  for (float v : g.pixels) hist[static_cast<std::size_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f)] += 1;
+  const double total = static_cast<double>(g.pixels.size());
+  double sum_all = 0;
+  for (std::size_t i = 0; i < 256; ++i) sum_all += static_cast<double>(i) * hist[i];
+  double w0 = 0, sum0 = 0, best = -1;
+  std::size_t best_i = 127;
+  for (std::size_t i = 0; i < 255; ++i) {
+    w0 += hist[i];
+    sum0 += static_cast<double>(i) * hist[i];
+    const double w1 = total - w0;
+    if (w0 == 0 || w1 == 0) continue;
+    const double m0 = sum0 / w0, m1 = (sum_all - sum0) / w1;
+    const double between = w0 * w1 * (m0 - m1) * (m0 - m1);
+    if (between > best) best = between, best_i = i;
+  }
+  return (static_cast<double>(best_i) + 0.5) / 255.0;
+}
+
+// The picture seen as marks: ink(x, y) > 0 on a mark, < 0 on the surface, the grey's distance
+// from the threshold towards the marks' side.
+class Marks {
+ public:
+  explicit Marks(const GrayImage& g) : g_(g), t_(otsu_threshold(g)) {
+    std::size_t below = 0;
+    for (float v : g.pixels) below += v < t_;
+    dark_ = 2 * below < g.pixels.size();
+  }
+  double ink(int x, int y) const {
+    const double v = g_.at(x, y);
+    return dark_ ? t_ - v : v - t_;
+  }
+  bool dark() const { return dark_; }
+
+ private:
+  const GrayImage& g_;
+  double t_;
+  bool dark_ = true;
+};
+
+// First and last index whose count reaches `min_count`; false when none does.
+bool extent(const std::vector<int>& counts, int min_count, int& first, int& last) {
+  first = -1;
+  for (int i = 0; i < static_cast<int>(counts.size()); ++i)
+    if (counts[static_cast<std::size_t>(i)] >= min_count) {
+      if (first < 0) first = i;
+      last = i;
+    }
+  return first >= 0;
+}
+
+std::string mm(double v) {
+  std::ostringstream s;
+  s.precision(4);
+  s << v;
+  return s.str();
+}
+
+struct Line {
+  double slope = 0, intercept = 0;
+};
+
+Line fit_line(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
+  const double d = n * sxx - sx * sx;
+  Line l;
+  l.slope = (n * sxy - sx * sy) / d;
+  l.intercept = (sy - l.slope * sx) / n;
+  return l;
+}
+
+}  // namespace
+
+LagFit fit_lag_from_image(const GrayImage& g, double pixel_mm, const LagPattern& pattern,
+                          const std::string& where) {
+  if (g.width < 8 || g.height < 8) throw InputError("'" + where + "': the picture is too small to show the lag pattern");
+  const Marks marks(g);
+  // Columns and rows holding at least 3 marked pixels: a speck of noise does not move the box.
+  std::vector<int> cols(static_cast<std::size_t>(g.width)), rows(static_cast<std::size_t>(g.height));
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x)
+      if (marks.ink(x, y) > 0) ++cols[static_cast<std::size_t>(x)], ++rows[static_cast<std::size_t>(y)];
+  int x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  if (!extent(cols, 3, x0, x1) || !extent(rows, 3, y0, y1))
+    throw InputError("'" + where + "': no marks found");
+  const Vec2 lo = pattern.min(), hi = pattern.max();
+  const double seen_w = (x1 - x0 + 1) * pixel_mm, seen_h = (y1 - y0 + 1) * pixel_mm;
+  const double want_w = hi.x - lo.x, want_h = hi.y - lo.y;
+  if (std::abs(seen_w - want_w) > 0.05 * want_w || std::abs(seen_h - want_h) > 0.05 * want_h)
+    throw InputError("'" + where + "': the marks span " + mm(seen_w) + " × " + mm(seen_h) + " mm at " +
+                     mm(pixel_mm * 1e3) + " µm pixels, the pattern " + mm(want_w) + " × " + mm(want_h) +
+                     " mm (within 5 %): a wrong --pixel-um, or not a picture of this pattern");
+
+  // Field mm ↔ picture pixels, placed by the box (its edges lie half a line's width outside the
+  // commanded starts: a pixel or two, well within the search below).
+  auto col_of = [&](double x) { return x0 + (x - lo.x) / pixel_mm; };
+  auto row_of = [&](double y) { return y0 + (hi.y - y) / pixel_mm; };
+  const int band = std::max(2, static_cast<int>(std::lround(std::min(0.3 * pattern.pitch_mm, 0.15) / pixel_mm)));
+  const double margin_mm = std::min(1.0, pattern.gap_mm / 2);
+
+  // The far end of a line, mm along its axis.
+  auto far_end = [&](const LagLine& l) {
+    const bool along_x = l.axis == 0;
+    const double lateral = along_x ? row_of(l.start.y) : col_of(l.start.x);
+    const int lat = static_cast<int>(std::lround(lateral));
+    const int lat_max = along_x ? g.height - 1 : g.width - 1;
+    const int along_max = along_x ? g.width - 1 : g.height - 1;
+    // Ink across the band at a position along the line.
+    auto ink_at = [&](int s) {
+      double best = -1e9;
+      for (int k = std::max(0, lat - band); k <= std::min(lat_max, lat + band); ++k)
+        best = std::max(best, along_x ? marks.ink(s, k) : marks.ink(k, s));
+      return best;
+    };
+    // Pixel steps along the line in the direction of travel: +1 for +x; rows grow downwards.
+    const double end = along_x ? l.end.x : l.end.y, start = along_x ? l.start.x : l.start.y;
+    const double dir = l.forward ? 1 : -1;
+    auto pix = [&](double v) { return along_x ? col_of(v) : row_of(v); };
+    const int step = along_x ? (l.forward ? -1 : 1) : (l.forward ? 1 : -1);  // inwards, in pixels
+    int s = std::clamp(static_cast<int>(std::lround(pix(end + dir * margin_mm))), 0, along_max);
+    const int stop = std::clamp(static_cast<int>(std::lround(pix((start + end) / 2))), 0, along_max);
+    double prev = ink_at(s);
+    if (prev > 0) {
+      std::ostringstream m;
+      m << "'" << where << "': the " << (along_x ? "x" : "y") << " line at " << l.speed_mm_s
+        << " mm/s is marked " << margin_mm << " mm past its end: not a picture of this pattern";
+      throw InputError(m.str());
+    }
+    for (s += step; s != stop + step; s += step) {
+      const double cur = ink_at(s);
+      if (cur > 0) {
+        const double frac = prev / (prev - cur);  // where the ink crosses 0 between s − step and s
+        const double p = (s - step) + frac * step;
+        return along_x ? lo.x + (p - x0) * pixel_mm : hi.y - (p - y0) * pixel_mm;
+      }
+      prev = cur;
+    }
+    std::ostringstream m;
+    m << "'" << where << "': the " << (along_x ? "x" : "y") << " line at " << l.speed_mm_s
+      << " mm/s has no mark within half its length of its end";
+    throw InputError(m.str());
+  };
+
+  LagFit fit;
+  double sum_sq = 0;
+  for (int axis = 0; axis < 2; ++axis) {
+    std::vector<double> v, d;
+    std::vector<std::size_t> idx;
+    for (std::size_t i = 0; i + 1 < pattern.lines.size(); ++i) {
+      const LagLine& f = pattern.lines[i];
+      const LagLine& b = pattern.lines[i + 1];
+      if (f.axis != axis || !f.forward || b.forward || b.speed_mm_s != f.speed_mm_s) continue;
+      LagPairFigure p;
+      p.axis = axis;
+      p.speed_mm_s = f.speed_mm_s;
+      p.ends_apart_mm = far_end(f) - far_end(b);
+      v.push_back(p.speed_mm_s);
+      d.push_back(p.ends_apart_mm);
+      fit.pairs.push_back(p);
+    }
+    if (v.size() < 3) throw InputError("'" + where + "': the pattern has fewer than three speeds per axis");
+    const Line line = fit_line(v, d);
+    const double tau = -line.slope / 2;
+    (axis == 0 ? fit.tau_x_s : fit.tau_y_s) = tau;
+    for (LagPairFigure& p : fit.pairs)
+      if (p.axis == axis) {
+        p.residual_um = (p.ends_apart_mm - (line.intercept + line.slope * p.speed_mm_s)) * 1e3;
+        sum_sq += p.residual_um * p.residual_um;
+      }
+    if (!(tau > 0)) {
+      std::ostringstream m;
+      m << "'" << where << "': the " << (axis == 0 ? "x" : "y") << " lines fit a lag of " << tau * 1e3
+        << " ms, not above 0: the picture is mirrored or turned, or not of this pattern";
+      throw InputError(m.str());
+    }
+  }
+  fit.tau_s = (fit.tau_x_s + fit.tau_y_s) / 2;
+  fit.rms_um = std::sqrt(sum_sq / static_cast<double>(fit.pairs.size()));
+  return fit;
+}
+
+}  // namespace mark

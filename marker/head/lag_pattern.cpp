@@ -1,0 +1,199 @@
+#include "marker/head/lag_pattern.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "base/error.hpp"
+
+namespace mark {
+namespace {
+
+constexpr const char* kFormat = "marker lag pattern";
+constexpr int kVersion = 1;
+
+// After a jump: long enough for the slowest plausible head (τ to ~0.6 ms) to come to rest far
+// below a micrometre, as head_response.cpp's holds; after a line, for the beam to catch up with
+// the laser off.
+constexpr double kJumpSettle_s = 12e-3;
+constexpr double kAfterLine_s = 2e-3;
+
+// Lays the lines out from the pattern's parameters (one function, so a parsed pattern is the
+// very one that was marked).
+void lay_out(LagPattern& p, Vec2 centre) {
+  const int rows = 2 * static_cast<int>(p.speeds_mm_s.size());
+  const double block = (rows - 1) * p.pitch_mm;
+  const double width = p.length_mm + p.gap_mm + block;
+  const double x0 = centre.x - width / 2, y0 = centre.y - p.length_mm / 2;
+  const double top = y0 + p.length_mm;
+  p.lines.clear();
+  for (int axis = 0; axis < 2; ++axis)
+    for (int i = 0; i < rows; ++i) {
+      LagLine l;
+      l.axis = axis;
+      l.forward = i % 2 == 0;
+      l.speed_mm_s = p.speeds_mm_s[static_cast<std::size_t>(i / 2)];
+      if (axis == 0) {
+        const double y = top - i * p.pitch_mm;
+        l.start = {x0, y};
+        l.end = {x0 + p.length_mm, y};
+      } else {
+        const double x = x0 + p.length_mm + p.gap_mm + i * p.pitch_mm;
+        l.start = {x, y0};
+        l.end = {x, top};
+      }
+      if (!l.forward) std::swap(l.start, l.end);
+      p.lines.push_back(l);
+    }
+}
+
+void check_field(const LagPattern& p, const HeadModel& head) {
+  const double half = head.field_mm / 2;
+  const Vec2 lo = p.min(), hi = p.max();
+  if (lo.x < -half || lo.y < -half || hi.x > half || hi.y > half) {
+    std::ostringstream m;
+    m << "lag pattern: " << hi.x - lo.x << " × " << hi.y - lo.y << " mm about ("
+      << (lo.x + hi.x) / 2 << ", " << (lo.y + hi.y) / 2 << ") does not fit the "
+      << head.field_mm << " mm field of head " << head.name;
+    throw InputError(m.str());
+  }
+}
+
+[[noreturn]] void fail(std::string_view where, const std::string& what) {
+  throw InputError("lag pattern " + std::string(where) + ": " + what);
+}
+
+double number(const nlohmann::json& j, const char* key, double lo, double hi, std::string_view where) {
+  const auto it = j.find(key);
+  if (it == j.end()) fail(where, std::string("'") + key + "' is missing");
+  if (!it->is_number()) fail(where, std::string("'") + key + "' must be a number");
+  const double v = it->get<double>();
+  if (!std::isfinite(v) || v < lo || v > hi) {
+    std::ostringstream m;
+    m << "'" << key << "' is " << v << ", outside " << lo << " to " << hi;
+    fail(where, m.str());
+  }
+  return v;
+}
+
+}  // namespace
+
+Vec2 LagPattern::min() const {
+  Vec2 m{1e300, 1e300};
+  for (const LagLine& l : lines)
+    m = {std::min({m.x, l.start.x, l.end.x}), std::min({m.y, l.start.y, l.end.y})};
+  return m;
+}
+
+Vec2 LagPattern::max() const {
+  Vec2 m{-1e300, -1e300};
+  for (const LagLine& l : lines)
+    m = {std::max({m.x, l.start.x, l.end.x}), std::max({m.y, l.start.y, l.end.y})};
+  return m;
+}
+
+LagPattern lag_pattern(const HeadModel& head, Vec2 centre) {
+  LagPattern p;
+  p.head = head.name;
+  const double top = 0.4 * head.max_speed_mm_s;
+  for (double v : {500.0, 1000.0, 2000.0, 3000.0, 4000.0})
+    if (v <= top) p.speeds_mm_s.push_back(v);
+  for (double v : {250.0, 100.0, 50.0})
+    if (p.speeds_mm_s.size() < 3 && v <= top) p.speeds_mm_s.insert(p.speeds_mm_s.begin(), v);
+  if (p.speeds_mm_s.size() < 3) {
+    std::ostringstream m;
+    m << "lag pattern: head " << head.name << " runs at most " << head.max_speed_mm_s
+      << " mm/s; the pattern needs three speeds of at least 50 mm/s within 40 % of it";
+    throw InputError(m.str());
+  }
+  lay_out(p, centre);
+  check_field(p, head);
+  return p;
+}
+
+std::vector<ScanSample> lag_pattern_samples(const LagPattern& pattern, double tick_s) {
+  double fastest = 0;
+  for (const LagLine& l : pattern.lines) fastest = std::max(fastest, l.speed_mm_s);
+  std::vector<ScanSample> out;
+  auto emit = [&](Vec2 p, bool laser, std::uint8_t power) {
+    out.push_back({static_cast<float>(p.x), static_cast<float>(p.y), laser, power});
+  };
+  auto hold = [&](Vec2 p, double seconds) {
+    const auto n = static_cast<std::size_t>(std::lround(seconds / tick_s));
+    for (std::size_t i = 0; i < n; ++i) emit(p, false, 0);
+  };
+  for (const LagLine& l : pattern.lines) {
+    hold(l.start, kJumpSettle_s);
+    const double length = norm(l.end - l.start);
+    const auto n = static_cast<std::size_t>(std::ceil(length / (l.speed_mm_s * tick_s) - 1e-9));
+    const auto power = static_cast<std::uint8_t>(std::clamp(std::lround(255 * l.speed_mm_s / fastest), 1L, 255L));
+    for (std::size_t i = 1; i <= n; ++i)
+      emit(l.start + (static_cast<double>(i) / static_cast<double>(n)) * (l.end - l.start), true, power);
+    hold(l.end, kAfterLine_s);
+  }
+  return out;
+}
+
+std::string lag_pattern_json(const LagPattern& p) {
+  const Vec2 lo = p.min(), hi = p.max();
+  nlohmann::ordered_json j;
+  j["format"] = kFormat;
+  j["version"] = kVersion;
+  j["head"] = p.head;
+  j["centre_mm"] = {(lo.x + hi.x) / 2, (lo.y + hi.y) / 2};
+  j["length_mm"] = p.length_mm;
+  j["pitch_mm"] = p.pitch_mm;
+  j["gap_mm"] = p.gap_mm;
+  j["speeds_mm_s"] = p.speeds_mm_s;
+  return j.dump(2) + "\n";
+}
+
+LagPattern parse_lag_pattern(std::string_view text, std::string_view where) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    fail(where, std::string("not JSON: ") + e.what());
+  }
+  const auto is = [&](const char* key, auto&& test) { return j.contains(key) && test(j[key]); };
+  if (!j.is_object() || !is("format", [](const auto& v) { return v.is_string() && v.template get<std::string>() == kFormat; }))
+    fail(where, std::string("not a lag pattern file (\"format\": \"") + kFormat + "\")");
+  if (!is("version", [](const auto& v) { return v.is_number_integer() && v.template get<long long>() == kVersion; }))
+    fail(where, "'version' must be 1");
+  LagPattern p;
+  if (is("head", [](const auto& v) { return v.is_string(); })) p.head = j["head"].get<std::string>();
+  p.length_mm = number(j, "length_mm", 1, 1000, where);
+  p.pitch_mm = number(j, "pitch_mm", 0.1, 100, where);
+  p.gap_mm = number(j, "gap_mm", 0.5, 100, where);
+  const auto centre = j.find("centre_mm");
+  if (centre == j.end() || !centre->is_array() || centre->size() != 2 || !(*centre)[0].is_number() ||
+      !(*centre)[1].is_number())
+    fail(where, "'centre_mm' must be [x, y]");
+  const auto speeds = j.find("speeds_mm_s");
+  if (speeds == j.end() || !speeds->is_array() || speeds->size() < 3 || speeds->size() > 20)
+    fail(where, "'speeds_mm_s' must list 3 to 20 speeds");
+  for (const auto& s : *speeds) {
+    if (!s.is_number() || !(s.get<double>() >= 1 && s.get<double>() <= 1e5))
+      fail(where, "'speeds_mm_s' holds a value outside 1 to 100000 mm/s");
+    p.speeds_mm_s.push_back(s.get<double>());
+  }
+  const Vec2 c{(*centre)[0].get<double>(), (*centre)[1].get<double>()};
+  if (!std::isfinite(c.x) || !std::isfinite(c.y) || std::abs(c.x) > 1e4 || std::abs(c.y) > 1e4)
+    fail(where, "'centre_mm' lies outside ±10000 mm");
+  lay_out(p, c);
+  return p;
+}
+
+LagPattern load_lag_pattern(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("lag pattern " + path + ": cannot be read");
+  std::ostringstream s;
+  s << in.rdbuf();
+  // A pattern is a few hundred bytes; anything much larger is not one.
+  if (s.str().size() > (1u << 20)) throw InputError("lag pattern " + path + ": larger than 1 MiB");
+  return parse_lag_pattern(s.str(), path);
+}
+
+}  // namespace mark

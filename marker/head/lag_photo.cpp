@@ -1,0 +1,36 @@
+#include "marker/head/lag_photo.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+namespace mark {
+
+GreyImage photograph_lag_pattern(const SimScannerOptions& head, const LagPattern& pattern,
+                                 CameraSettings camera) {
+  SimScannerOptions o = head;
+  o.record_lit_paths = false;
+  o.probe = nullptr;
+  SimScanner scanner(o);
+  const std::vector<ScanSample> samples = lag_pattern_samples(pattern, o.tick_s);
+  constexpr std::size_t kBlock = 100;
+  for (std::size_t i = 0; i < samples.size(); i += kBlock)
+    scanner.write(std::span<const ScanSample>(samples).subspan(i, std::min(kBlock, samples.size() - i)));
+
+  double fastest = 0;
+  for (const LagLine& l : pattern.lines) fastest = std::max(fastest, l.speed_mm_s);
+  MarkResponse response;
+  response.reference_speed_mm_s = fastest;  // full power there marks one spot wide
+  response.reference_width_mm = response.spot_diameter_mm;
+
+  const Vec2 lo = pattern.min(), hi = pattern.max();
+  const double margin = 1.5;
+  const FieldWindow window{lo.x - margin, lo.y - margin, hi.x + margin, hi.y + margin};
+  if (camera.pixel_um == 0) camera.pixel_um = kLagPhotoPixelUm;
+  const double px = camera_pixel_mm(camera, window, scanner.dose().pixel_mm());
+  camera.sensor_width_px = std::max(camera.sensor_width_px, static_cast<int>(std::ceil(window.width() / px)) + 1);
+  camera.sensor_height_px = std::max(camera.sensor_height_px, static_cast<int>(std::ceil(window.height() / px)) + 1);
+  return photograph(scanner.dose(), window, response, camera, false, px).picture;
+}
+
+}  // namespace mark

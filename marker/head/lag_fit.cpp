@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include "base/error.hpp"
@@ -108,33 +109,106 @@ LagFit fit_lag_from_image(const GrayImage& g, double pixel_mm, const LagPattern&
                      " mm (within 5 %): a wrong --pixel-um, or not a picture of this pattern");
 
   // Field mm ↔ picture pixels, placed by the box (its edges lie half a line's width outside the
-  // commanded starts: a pixel or two, well within the search below).
+  // commanded starts; a turned picture's box misplaces a line by up to a few tenths of a mm,
+  // which the lines' own centres below take out).
   auto col_of = [&](double x) { return x0 + (x - lo.x) / pixel_mm; };
   auto row_of = [&](double y) { return y0 + (hi.y - y) / pixel_mm; };
   const int band = std::max(2, static_cast<int>(std::lround(std::min(0.3 * pattern.pitch_mm, 0.15) / pixel_mm)));
   const double margin_mm = std::min(1.0, pattern.gap_mm / 2);
 
+  // Per axis: `along` is the pixel coordinate along that axis's lines (column for x lines),
+  // `lateral` across them.
+  struct Axis {
+    int along_max = 0, lat_max = 0;
+    std::function<double(double)> along_px, lateral_px;  // field mm → pixel coordinate
+    std::function<double(int, int)> ink;                  // (along, lateral)
+  };
+  const Axis axes[2] = {
+      {g.width - 1, g.height - 1, col_of, row_of, [&](int s, int k) { return marks.ink(s, k); }},
+      {g.height - 1, g.width - 1, row_of, col_of, [&](int s, int k) { return marks.ink(k, s); }}};
+
+  // Where each line's centre is, across it, at two places along its block (30 % and 70 % of the
+  // length from the block's low end: every line is marked there whatever its direction, no lag
+  // reaching back that far): the ink's runs across a five-pixel strip, the block's lines found
+  // in order. A straight line through the two follows a picture turned by up to 1.5°.
+  struct Track {
+    double s1 = 0, c1 = 0, s2 = 0, c2 = 0;
+    int lateral_at(int s) const {
+      const double c = s2 == s1 ? c1 : c1 + (c2 - c1) * (s - s1) / (s2 - s1);  // both clamped to one edge
+      return static_cast<int>(std::lround(c));
+    }
+  };
+  std::vector<Track> tracks(pattern.lines.size());
+  for (int a = 0; a < 2; ++a) {
+    const Axis& ax = axes[a];
+    std::vector<std::size_t> lines;  // this block's lines, in the order they lie across the picture
+    double lat_lo = 1e300, lat_hi = -1e300, low = 1e300;
+    for (std::size_t i = 0; i < pattern.lines.size(); ++i) {
+      const LagLine& l = pattern.lines[i];
+      if (l.axis != a) continue;
+      lines.push_back(i);
+      const double lat = a == 0 ? l.start.y : l.start.x, along = a == 0 ? std::min(l.start.x, l.end.x) : std::min(l.start.y, l.end.y);
+      lat_lo = std::min(lat_lo, lat), lat_hi = std::max(lat_hi, lat), low = std::min(low, along);
+    }
+    auto lat_of = [&](std::size_t i) { return ax.lateral_px(a == 0 ? pattern.lines[i].start.y : pattern.lines[i].start.x); };
+    std::sort(lines.begin(), lines.end(), [&](std::size_t p, std::size_t q) { return lat_of(p) < lat_of(q); });
+    const double half_pitch = pattern.pitch_mm / 2;
+    const int k_from = std::clamp(static_cast<int>(std::floor(std::min(ax.lateral_px(lat_lo - half_pitch), ax.lateral_px(lat_hi + half_pitch)))), 0, ax.lat_max);
+    const int k_to = std::clamp(static_cast<int>(std::ceil(std::max(ax.lateral_px(lat_lo - half_pitch), ax.lateral_px(lat_hi + half_pitch)))), 0, ax.lat_max);
+    for (int place = 0; place < 2; ++place) {
+      const double s_px = std::clamp(ax.along_px(low + (place == 0 ? 0.3 : 0.7) * pattern.length_mm), 0.0,
+                                     static_cast<double>(ax.along_max));
+      const int s0 = static_cast<int>(std::lround(s_px));
+      std::vector<double> profile(static_cast<std::size_t>(k_to - k_from + 1));
+      for (int k = k_from; k <= k_to; ++k)
+        for (int s = std::max(0, s0 - 2); s <= std::min(ax.along_max, s0 + 2); ++s)
+          profile[static_cast<std::size_t>(k - k_from)] += std::max(0.0, ax.ink(s, k));
+      // Runs of ink across the strip: (weight, centroid).
+      std::vector<std::pair<double, double>> runs;
+      for (std::size_t k = 0; k < profile.size();) {
+        if (profile[k] <= 0) { ++k; continue; }
+        double w = 0, wk = 0;
+        for (; k < profile.size() && profile[k] > 0; ++k) w += profile[k], wk += profile[k] * static_cast<double>(k);
+        runs.push_back({w, k_from + wk / w});
+      }
+      // A speck is not a line: runs under a tenth of the heaviest are dropped.
+      double heaviest = 0;
+      for (const auto& r : runs) heaviest = std::max(heaviest, r.first);
+      std::erase_if(runs, [&](const auto& r) { return r.first < 0.1 * heaviest; });
+      if (runs.size() != lines.size()) {
+        std::ostringstream m;
+        m << "'" << where << "': " << runs.size() << " " << (a == 0 ? "x" : "y") << " lines found across the picture "
+          << (place == 0 ? 30 : 70) << " % along them, the pattern has " << lines.size()
+          << ": not a picture of this pattern, or turned by more than 1.5°";
+        throw InputError(m.str());
+      }
+      for (std::size_t j = 0; j < lines.size(); ++j) {
+        Track& t = tracks[lines[j]];
+        (place == 0 ? t.s1 : t.s2) = s_px;
+        (place == 0 ? t.c1 : t.c2) = runs[j].second;
+      }
+    }
+  }
+
   // The far end of a line, mm along its axis.
-  auto far_end = [&](const LagLine& l) {
+  auto far_end = [&](std::size_t index) {
+    const LagLine& l = pattern.lines[index];
     const bool along_x = l.axis == 0;
-    const double lateral = along_x ? row_of(l.start.y) : col_of(l.start.x);
-    const int lat = static_cast<int>(std::lround(lateral));
-    const int lat_max = along_x ? g.height - 1 : g.width - 1;
-    const int along_max = along_x ? g.width - 1 : g.height - 1;
-    // Ink across the band at a position along the line.
+    const Axis& ax = axes[l.axis];
+    const Track& track = tracks[index];
+    const double end = along_x ? l.end.x : l.end.y, start = along_x ? l.start.x : l.start.y;
+    // Ink across the band about the line's centre at a position along the line.
     auto ink_at = [&](int s) {
+      const int lat = track.lateral_at(s);
       double best = -1e9;
-      for (int k = std::max(0, lat - band); k <= std::min(lat_max, lat + band); ++k)
-        best = std::max(best, along_x ? marks.ink(s, k) : marks.ink(k, s));
+      for (int k = std::max(0, lat - band); k <= std::min(ax.lat_max, lat + band); ++k) best = std::max(best, ax.ink(s, k));
       return best;
     };
     // Pixel steps along the line in the direction of travel: +1 for +x; rows grow downwards.
-    const double end = along_x ? l.end.x : l.end.y, start = along_x ? l.start.x : l.start.y;
     const double dir = l.forward ? 1 : -1;
-    auto pix = [&](double v) { return along_x ? col_of(v) : row_of(v); };
     const int step = along_x ? (l.forward ? -1 : 1) : (l.forward ? 1 : -1);  // inwards, in pixels
-    int s = std::clamp(static_cast<int>(std::lround(pix(end + dir * margin_mm))), 0, along_max);
-    const int stop = std::clamp(static_cast<int>(std::lround(pix((start + end) / 2))), 0, along_max);
+    int s = std::clamp(static_cast<int>(std::lround(ax.along_px(end + dir * margin_mm))), 0, ax.along_max);
+    const int stop = std::clamp(static_cast<int>(std::lround(ax.along_px((start + end) / 2))), 0, ax.along_max);
     double prev = ink_at(s);
     if (prev > 0) {
       std::ostringstream m;
@@ -169,7 +243,7 @@ LagFit fit_lag_from_image(const GrayImage& g, double pixel_mm, const LagPattern&
       LagPairFigure p;
       p.axis = axis;
       p.speed_mm_s = f.speed_mm_s;
-      p.ends_apart_mm = far_end(f) - far_end(b);
+      p.ends_apart_mm = far_end(i) - far_end(i + 1);
       v.push_back(p.speed_mm_s);
       d.push_back(p.ends_apart_mm);
       fit.pairs.push_back(p);

@@ -1,16 +1,18 @@
 #pragma once
 // Fits the servo's ramp lag from a picture of the lag test pattern (lag_pattern.hpp): a camera
 // photograph or a flatbed scan, at a known pixel size, the pattern upright (x to the right,
-// y up; a picture turned by a few degrees still fits, its offset being the same at every
-// speed).
+// y up; a picture turned by up to 1.5° still fits: each line is followed across the
+// picture, and the offset the turn adds between neighbouring rows is the same at every speed).
 //
 //   1. Marks are told from the surface by Otsu's threshold; the side with fewer pixels is the
 //      marks (dark marks on a light part, or light on a dark one).
 //   2. The marks' bounding box places the pattern: its edges are where lines start from rest
 //      (sharp) or the lines' sides, never a lagging end.
-//   3. Along each line's centre (the darkest of the few pixel rows about it), the far end is
-//      where the marks cross the threshold, found from outside inwards and interpolated
-//      between pixels.
+//   3. Each line's centre is found at 30 % and 70 % of its block's length, where every line is
+//      marked (the centroids of the ink's runs across a five-pixel strip, in order); along the
+//      straight line through the two (the darkest pixel within 0.15 mm of it), the far end is
+//      where the marks cross the threshold, found from outside inwards and interpolated between
+//      pixels.
 //   4. Per speed, the far ends of the forward and the backward line lie L − 2·v·τ + c apart;
 //      a straight line through those distances over the speeds gives τ per axis.
 #include <string>

@@ -1,11 +1,10 @@
 #include "marker/head/head_profile.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "base/error.hpp"
+#include "marker/head/head_file.hpp"
 #include "marker/output/output_file.hpp"
 
 namespace mark {
@@ -29,36 +28,18 @@ constexpr Range kField{"field_mm", 1e-3, 1e4};
 constexpr Range kTick{"tick_s", 1e-7, 1e-2};
 constexpr Range kRms{"", 0, 1e9};
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-[[noreturn]] void fail(std::string_view where, const std::string& what) {
-  throw InputError("head profile " + std::string(where) + ": " + what);
-}
+constexpr HeadFileKind kKind{"head profile", kFormat, kVersion};
 
 double number(const nlohmann::json& j, const char* key, const Range& r, std::string_view where,
               bool required = true, double fallback = 0) {
-  const auto it = j.find(key);
-  if (it == j.end()) {
-    if (required) fail(where, std::string("'") + key + "' is missing");
-    return fallback;
-  }
-  if (!it->is_number()) fail(where, std::string("'") + key + "' must be a number");
-  const double v = it->get<double>();
-  if (!std::isfinite(v) || v < r.lo || v > r.hi)
-    fail(where, std::string("'") + key + "' is " + fmt(v) + ", outside " + fmt(r.lo) + " to " +
-                    fmt(r.hi));
-  return v;
+  return head_file_number(kKind, j, key, r.lo, r.hi, where, required, fallback);
 }
 
 std::string text(const nlohmann::json& j, const char* key, std::string_view where,
                  const std::string& fallback) {
   const auto it = j.find(key);
   if (it == j.end()) return fallback;
-  if (!it->is_string()) fail(where, std::string("'") + key + "' must be a string");
+  if (!it->is_string()) head_file_error(kKind, where, std::string("'") + key + "' must be a string");
   return it->get<std::string>();
 }
 
@@ -123,22 +104,12 @@ std::string head_profile_json(const HeadProfile& p) {
 }
 
 HeadProfile parse_head_profile(std::string_view json_text, std::string_view where) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::exception& e) {  // syntax, or a number out of range (1e400)
-    fail(where, std::string("not JSON (") + e.what() + ")");
-  }
-  if (!j.is_object()) fail(where, "must be one JSON object");
-  if (text(j, "format", where, "") != kFormat)
-    fail(where, std::string("'format' must be \"") + kFormat + "\"");
-  if (!j.contains("version") || !j["version"].is_number_integer() || j["version"].get<long long>() != kVersion)
-    fail(where, "'version' must be " + std::to_string(kVersion));
+  const nlohmann::json j = parse_head_file(kKind, json_text, where);
   HeadProfile p;
   p.head = text(j, "head", where, "");
   const std::string model = text(j, "model", where, "first");
   if (model != "first" && model != "second")
-    fail(where, "'model' is \"" + model + "\", not one of first, second");
+    head_file_error(kKind, where, "'model' is \"" + model + "\", not one of first, second");
   p.model = parse_servo_order(model);
   // The chosen model's parameters are required, the other's optional.
   const bool first = p.model == ServoOrder::first;
@@ -160,13 +131,7 @@ void save_head_profile(const HeadProfile& profile, const std::string& path) {
 }
 
 HeadProfile load_head_profile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("head profile " + path + ": cannot be read");
-  std::ostringstream s;
-  s << in.rdbuf();
-  // A profile is a few hundred bytes; anything much larger is not one.
-  if (s.str().size() > (1u << 20)) throw InputError("head profile " + path + ": larger than 1 MiB");
-  return parse_head_profile(s.str(), path);
+  return parse_head_profile(read_head_file(kKind, path), path);
 }
 
 }  // namespace mark

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "base/error.hpp"
+#include "marker/head/head_file.hpp"
 
 namespace mark {
 namespace {
@@ -61,21 +61,10 @@ void check_field(const LagPattern& p, const HeadModel& head) {
   }
 }
 
-[[noreturn]] void fail(std::string_view where, const std::string& what) {
-  throw InputError("lag pattern " + std::string(where) + ": " + what);
-}
+constexpr HeadFileKind kKind{"lag pattern", kFormat, kVersion};
 
 double number(const nlohmann::json& j, const char* key, double lo, double hi, std::string_view where) {
-  const auto it = j.find(key);
-  if (it == j.end()) fail(where, std::string("'") + key + "' is missing");
-  if (!it->is_number()) fail(where, std::string("'") + key + "' must be a number");
-  const double v = it->get<double>();
-  if (!std::isfinite(v) || v < lo || v > hi) {
-    std::ostringstream m;
-    m << "'" << key << "' is " << v << ", outside " << lo << " to " << hi;
-    fail(where, m.str());
-  }
-  return v;
+  return head_file_number(kKind, j, key, lo, hi, where);
 }
 
 }  // namespace
@@ -151,49 +140,34 @@ std::string lag_pattern_json(const LagPattern& p) {
 }
 
 LagPattern parse_lag_pattern(std::string_view text, std::string_view where) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    fail(where, std::string("not JSON: ") + e.what());
-  }
-  const auto is = [&](const char* key, auto&& test) { return j.contains(key) && test(j[key]); };
-  if (!j.is_object() || !is("format", [](const auto& v) { return v.is_string() && v.template get<std::string>() == kFormat; }))
-    fail(where, std::string("not a lag pattern file (\"format\": \"") + kFormat + "\")");
-  if (!is("version", [](const auto& v) { return v.is_number_integer() && v.template get<long long>() == kVersion; }))
-    fail(where, "'version' must be 1");
+  const nlohmann::json j = parse_head_file(kKind, text, where);
   LagPattern p;
-  if (is("head", [](const auto& v) { return v.is_string(); })) p.head = j["head"].get<std::string>();
+  const auto head = j.find("head");
+  if (head != j.end() && head->is_string()) p.head = head->get<std::string>();
   p.length_mm = number(j, "length_mm", 1, 1000, where);
   p.pitch_mm = number(j, "pitch_mm", 0.1, 100, where);
   p.gap_mm = number(j, "gap_mm", 0.5, 100, where);
   const auto centre = j.find("centre_mm");
   if (centre == j.end() || !centre->is_array() || centre->size() != 2 || !(*centre)[0].is_number() ||
       !(*centre)[1].is_number())
-    fail(where, "'centre_mm' must be [x, y]");
+    head_file_error(kKind, where, "'centre_mm' must be [x, y]");
   const auto speeds = j.find("speeds_mm_s");
   if (speeds == j.end() || !speeds->is_array() || speeds->size() < 3 || speeds->size() > 20)
-    fail(where, "'speeds_mm_s' must list 3 to 20 speeds");
+    head_file_error(kKind, where, "'speeds_mm_s' must list 3 to 20 speeds");
   for (const auto& s : *speeds) {
     if (!s.is_number() || !(s.get<double>() >= 1 && s.get<double>() <= 1e5))
-      fail(where, "'speeds_mm_s' holds a value outside 1 to 100000 mm/s");
+      head_file_error(kKind, where, "'speeds_mm_s' holds a value outside 1 to 100000 mm/s");
     p.speeds_mm_s.push_back(s.get<double>());
   }
   const Vec2 c{(*centre)[0].get<double>(), (*centre)[1].get<double>()};
   if (!std::isfinite(c.x) || !std::isfinite(c.y) || std::abs(c.x) > 1e4 || std::abs(c.y) > 1e4)
-    fail(where, "'centre_mm' lies outside ±10000 mm");
+    head_file_error(kKind, where, "'centre_mm' lies outside ±10000 mm");
   lay_out(p, c);
   return p;
 }
 
 LagPattern load_lag_pattern(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("lag pattern " + path + ": cannot be read");
-  std::ostringstream s;
-  s << in.rdbuf();
-  // A pattern is a few hundred bytes; anything much larger is not one.
-  if (s.str().size() > (1u << 20)) throw InputError("lag pattern " + path + ": larger than 1 MiB");
-  return parse_lag_pattern(s.str(), path);
+  return parse_lag_pattern(read_head_file(kKind, path), path);
 }
 
 }  // namespace mark

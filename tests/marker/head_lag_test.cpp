@@ -205,9 +205,10 @@ TEST(HeadLag, ThePatternFileRoundTripsAndABadOneIsRefusedNamingTheKey) {
             "lag pattern p.json: 'length_mm' is 0.5, outside 1 to 1000");
   EXPECT_EQ(refusal(head + R"("length_mm": 20, "pitch_mm": 1, "gap_mm": 3, "speeds_mm_s": [1, 2]})"),
             "lag pattern p.json: 'speeds_mm_s' must list 3 to 20 speeds");
-  EXPECT_EQ(refusal(R"({"format": 7})"), "lag pattern p.json: not a lag pattern file (\"format\": \"marker lag pattern\")");
+  EXPECT_EQ(refusal(R"({"format": 7})"), "lag pattern p.json: 'format' must be \"marker lag pattern\"");
   EXPECT_EQ(refusal(R"({"format": "marker lag pattern", "version": "1"})"), "lag pattern p.json: 'version' must be 1");
-  EXPECT_NE(refusal("[1,").find("lag pattern p.json: not JSON"), std::string::npos);
+  EXPECT_NE(refusal("[1,").find("lag pattern p.json: not JSON ("), std::string::npos);
+  EXPECT_EQ(refusal("[1]"), "lag pattern p.json: must be one JSON object");
 }
 
 TEST(HeadLagCli, TestPatternThenIdentifyFromImageWritesAProfileTheMarkCommandTakes) {

@@ -18,6 +18,7 @@
 #include "base/error.hpp"
 #include "driver/sim/grey_png.hpp"
 #include "marker/cli/commands.hpp"
+#include "marker/cli/console_progress.hpp"
 #include "marker/cli/head_options.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/output_options.hpp"
@@ -72,8 +73,12 @@ int identify_from_image(const IdentifyArgs& a) {
   const std::string path = a.output.empty() ? "head-" + head.name + ".json" : a.output;
   check_standard_output({{"--output", &path}}, a.json);
   check_output_path("--output", path);
+  // Ctrl-C before the profile is written stops the command with nothing written (the watchdog).
+  ConsoleProgress progress = command_progress(a.json);
   const LagPattern pattern = load_lag_pattern(a.pattern);
+  progress.step("reading the picture", 0, 2);
   const GrayImage picture = read_gray_image(a.from_image);
+  progress.step("fitting the lag", 1, 2);
   const LagFit fit = fit_lag_from_image(picture, *a.pixel_um / 1000, pattern, a.from_image);
 
   HeadProfile p = datasheet_profile(head);
@@ -82,6 +87,7 @@ int identify_from_image(const IdentifyArgs& a) {
   p.fit_rms_first_um = fit.rms_um;
   p.fit_rms_second_um = 0;
   p.source = "image";
+  progress.writing_files();
   save_head_profile(p, path);
   if (a.json) {
     nlohmann::ordered_json j;
@@ -127,7 +133,11 @@ int test_pattern(const PatternArgs& a) {
   sim.laser_rise_s = a.head.laser_rise_us * 1e-6;
   sim.plant = parse_plant_option(a.head.plant);
   const LagPattern pattern = lag_pattern(sim.head);
+  // Ctrl-C before the files are written stops the command with nothing written (the watchdog).
+  ConsoleProgress progress = command_progress(a.json);
+  progress.step("marking and photographing the lag pattern", 0, 1);
   const GreyImage picture = photograph_lag_pattern(sim, pattern);
+  progress.writing_files();
   write_file_whole(a.output, lag_pattern_json(pattern));
   write_file_whole(a.picture, encode_grey_png(picture));
   const Vec2 lo = pattern.min(), hi = pattern.max();

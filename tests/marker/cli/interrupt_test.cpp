@@ -101,6 +101,22 @@ TEST(Interrupt, QuietGcodePrintsOnlyWhereItStopped) {
   expect_empty(dir);
 }
 
+TEST(Interrupt, HeadTestPatternStopsWithNothingWritten) {
+  // Marking and photographing the lag pattern takes about 2 s; neither the pattern file nor the
+  // picture may appear.
+  const fs::path dir = fresh_temp_dir("marker_interrupt_pattern");
+  const fs::path errors = fresh_temp_dir("marker_interrupt_pattern_err") / "stderr.txt";
+  const Stopped s = interrupt_after({"head", "test-pattern", "-o", (dir / "p.json").string(), "--picture",
+                                     (dir / "p.png").string()},
+                                    std::chrono::milliseconds(600), errors);
+  ASSERT_TRUE(s.exited) << "killed by the signal instead of stopping";
+  EXPECT_EQ(s.code, 130);
+  EXPECT_NE(s.err.find("marker: interrupted while marking and photographing the lag pattern"), std::string::npos)
+      << s.err;
+  EXPECT_NE(s.err.find("; nothing was written\n"), std::string::npos) << s.err;
+  expect_empty(dir);
+}
+
 TEST(Interrupt, PeenAndPreviewStopWithNothingWritten) {
   const fs::path dir = fresh_temp_dir("marker_interrupt_peen");
   const fs::path errors = fresh_temp_dir("marker_interrupt_peen_err") / "stderr.txt";

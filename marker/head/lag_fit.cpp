@@ -90,7 +90,8 @@ Line fit_line(const std::vector<double>& x, const std::vector<double>& y) {
 
 LagFit fit_lag_from_image(const GrayImage& g, double pixel_mm, const LagPattern& pattern,
                           const std::string& where) {
-  if (g.width < 8 || g.height < 8) throw InputError("'" + where + "': the picture is too small to show the lag pattern");
+  if (g.width < 8 || g.height < 8)
+    throw InputError("'" + where + "': the picture is too small to show the lag pattern");
   const Marks marks(g);
   // Columns and rows holding at least 3 marked pixels: a speck of noise does not move the box.
   std::vector<int> cols(static_cast<std::size_t>(g.width)), rows(static_cast<std::size_t>(g.height));
@@ -147,14 +148,19 @@ LagFit fit_lag_from_image(const GrayImage& g, double pixel_mm, const LagPattern&
       const LagLine& l = pattern.lines[i];
       if (l.axis != a) continue;
       lines.push_back(i);
-      const double lat = a == 0 ? l.start.y : l.start.x, along = a == 0 ? std::min(l.start.x, l.end.x) : std::min(l.start.y, l.end.y);
+      const double lat = a == 0 ? l.start.y : l.start.x;
+      const double along = a == 0 ? std::min(l.start.x, l.end.x) : std::min(l.start.y, l.end.y);
       lat_lo = std::min(lat_lo, lat), lat_hi = std::max(lat_hi, lat), low = std::min(low, along);
     }
-    auto lat_of = [&](std::size_t i) { return ax.lateral_px(a == 0 ? pattern.lines[i].start.y : pattern.lines[i].start.x); };
+    auto lat_of = [&](std::size_t i) {
+      return ax.lateral_px(a == 0 ? pattern.lines[i].start.y : pattern.lines[i].start.x);
+    };
     std::sort(lines.begin(), lines.end(), [&](std::size_t p, std::size_t q) { return lat_of(p) < lat_of(q); });
-    const double half_pitch = pattern.pitch_mm / 2;
-    const int k_from = std::clamp(static_cast<int>(std::floor(std::min(ax.lateral_px(lat_lo - half_pitch), ax.lateral_px(lat_hi + half_pitch)))), 0, ax.lat_max);
-    const int k_to = std::clamp(static_cast<int>(std::ceil(std::max(ax.lateral_px(lat_lo - half_pitch), ax.lateral_px(lat_hi + half_pitch)))), 0, ax.lat_max);
+    // The strip runs across the block and half a pitch beyond its outer lines.
+    const double edge1 = ax.lateral_px(lat_lo - pattern.pitch_mm / 2);
+    const double edge2 = ax.lateral_px(lat_hi + pattern.pitch_mm / 2);
+    const int k_from = std::clamp(static_cast<int>(std::floor(std::min(edge1, edge2))), 0, ax.lat_max);
+    const int k_to = std::clamp(static_cast<int>(std::ceil(std::max(edge1, edge2))), 0, ax.lat_max);
     for (int place = 0; place < 2; ++place) {
       const double s_px = std::clamp(ax.along_px(low + (place == 0 ? 0.3 : 0.7) * pattern.length_mm), 0.0,
                                      static_cast<double>(ax.along_max));
@@ -168,7 +174,8 @@ LagFit fit_lag_from_image(const GrayImage& g, double pixel_mm, const LagPattern&
       for (std::size_t k = 0; k < profile.size();) {
         if (profile[k] <= 0) { ++k; continue; }
         double w = 0, wk = 0;
-        for (; k < profile.size() && profile[k] > 0; ++k) w += profile[k], wk += profile[k] * static_cast<double>(k);
+        for (; k < profile.size() && profile[k] > 0; ++k)
+          w += profile[k], wk += profile[k] * static_cast<double>(k);
         runs.push_back({w, k_from + wk / w});
       }
       // A speck is not a line: runs under a tenth of the heaviest are dropped.
@@ -177,7 +184,8 @@ LagFit fit_lag_from_image(const GrayImage& g, double pixel_mm, const LagPattern&
       std::erase_if(runs, [&](const auto& r) { return r.first < 0.1 * heaviest; });
       if (runs.size() != lines.size()) {
         std::ostringstream m;
-        m << "'" << where << "': " << runs.size() << " " << (a == 0 ? "x" : "y") << " lines found across the picture "
+        m << "'" << where << "': " << runs.size() << " " << (a == 0 ? "x" : "y")
+          << " lines found across the picture "
           << (place == 0 ? 30 : 70) << " % along them, the pattern has " << lines.size()
           << ": not a picture of this pattern, or turned by more than 1.5°";
         throw InputError(m.str());
@@ -201,7 +209,8 @@ LagFit fit_lag_from_image(const GrayImage& g, double pixel_mm, const LagPattern&
     auto ink_at = [&](int s) {
       const int lat = track.lateral_at(s);
       double best = -1e9;
-      for (int k = std::max(0, lat - band); k <= std::min(ax.lat_max, lat + band); ++k) best = std::max(best, ax.ink(s, k));
+      for (int k = std::max(0, lat - band); k <= std::min(ax.lat_max, lat + band); ++k)
+        best = std::max(best, ax.ink(s, k));
       return best;
     };
     // Pixel steps along the line in the direction of travel: +1 for +x; rows grow downwards.

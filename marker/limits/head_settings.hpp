@@ -36,7 +36,7 @@ inline constexpr Quantity kField{
     {1, 10000, "mm"}, 110, "110; a job file: the head's (110)"};
 
 // `head identify --from-image`: the picture's pixel on the part, from a microscope camera
-// (0.1 µm) to a coarse scan (1 mm per pixel shows no lag at all, but says so in the fit).
+// (0.1 µm) to the coarsest scan that still shows the pattern's 1 mm rows apart (1 mm).
 inline constexpr Quantity kPicturePixel{
     {"--pixel-um", "", "head identify --from-image: the picture's pixel on the part"},
     {0.1, 1000, "µm"}, {}, "required with --from-image"};

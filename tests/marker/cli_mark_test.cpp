@@ -103,7 +103,8 @@ TEST(CliMark, RequireQualityRefusesToFireWhenThePredictionFallsShort) {
 TEST(CliMark, CtrlCPutsTheLaserOutWithinOneBlockAndExits130) {
   // The real binary in real time, a job of about 4.9 s; SIGINT once it has been marking for a
   // while. Startup takes about 0.3 s, more on a loaded machine or a sanitizer build (an
-  // AddressSanitizer run beside other tests took over 0.7 s), so the signal comes at 1.5 s. The drain measures, on the device's own clock, how many samples went out after the
+  // AddressSanitizer run beside other tests took over 0.7 s), so the signal comes at 1.5 s.
+  // The drain measures, on the device's own clock, how many samples went out after the
   // signal: at most one block (100 samples = 1 ms).
   const std::string binary = std::string(MARKER_BINARY_DIR) + "/marker/marker";
   const auto out = fresh_temp_file("marker_cli_mark", "interrupted.json");

@@ -154,14 +154,20 @@ template <class T, class Device, class Make>
 void abort_from_another_thread(Device& device, const JobHeader& header, StreamOptions<T> o, Make make,
                                std::uint64_t block) {
   std::atomic<std::uint64_t> at_abort{0};
+  // The station waits for 20 blocks, or for the job to end first (a real-time job on an
+  // overloaded machine can underrun before then): the test then fails instead of hanging.
+  std::atomic<bool> ended{false};
   std::thread station([&] {
-    while (device.status().progress < 20 * block) std::this_thread::sleep_for(std::chrono::microseconds(200));
+    while (device.status().progress < 20 * block && !ended.load())
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    if (ended.load()) return;
     device.abort();
     at_abort = device.status().progress;
   });
   const StreamResult r = stream_samples(device, header, make, o);
+  ended.store(true);
   station.join();
-  EXPECT_EQ(r.ending.outcome, DeviceState::aborted);
+  ASSERT_EQ(r.ending.outcome, DeviceState::aborted) << "the job ended before the abort";
   EXPECT_FALSE(r.ending.fault);
   EXPECT_EQ(r.device.outcome, DeviceState::aborted);
   EXPECT_LE(r.device.samples_out, at_abort + block);

@@ -5,6 +5,8 @@
 // block of where it fell on the device's clock.
 #include <gtest/gtest.h>
 
+#include <atomic>
+
 #include <cmath>
 #include <thread>
 
@@ -124,14 +126,21 @@ TEST(JobSafety, StopFromAnotherThreadInRealTimeWithinOneBlock) {
   JobOptions o;
   o.stop = &stop;
   std::int64_t published_ns = 0;
+  // The operator waits for 20000 samples, or for the job to end first: a real-time job on an
+  // overloaded machine can underrun before then, and the test must fail on that, not wait for
+  // ever (it hung a CI rehearsal's ThreadSanitizer run beside a kill test).
+  std::atomic<bool> ended{false};
   std::thread operator_([&] {
-    while (sim.status().progress < 20000) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    while (sim.status().progress < 20000 && !ended.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (ended.load()) return;
     stop.request();
     published_ns = StopFlag::now_ns();
   });
   const JobResult r = run_job_simulated(spec, o, sim);
+  ended.store(true);
   operator_.join();
-  EXPECT_EQ(r.outcome, JobOutcome::aborted);
+  ASSERT_EQ(r.outcome, JobOutcome::aborted) << "the job ended before the stop: "
+                                            << (r.fault ? r.fault->message : std::string("done"));
   EXPECT_GE(r.stopped_at, 20000u);
   // The drain checks after every wait: at most one block (100 samples = 1 ms) after the request
   // fell on the device's clock, the laser is out. The request's time is taken before its flag

@@ -69,6 +69,12 @@ double number(const nlohmann::json& j, const char* key, double lo, double hi, st
 
 }  // namespace
 
+double LagPattern::fastest_mm_s() const {
+  double fastest = 0;
+  for (const LagLine& l : lines) fastest = std::max(fastest, l.speed_mm_s);
+  return fastest;
+}
+
 Vec2 LagPattern::min() const {
   Vec2 m{1e300, 1e300};
   for (const LagLine& l : lines)
@@ -103,8 +109,7 @@ LagPattern lag_pattern(const HeadModel& head, Vec2 centre) {
 }
 
 std::vector<ScanSample> lag_pattern_samples(const LagPattern& pattern, double tick_s) {
-  double fastest = 0;
-  for (const LagLine& l : pattern.lines) fastest = std::max(fastest, l.speed_mm_s);
+  const double fastest = pattern.fastest_mm_s();
   std::vector<ScanSample> out;
   auto emit = [&](Vec2 p, bool laser, std::uint8_t power) {
     out.push_back({static_cast<float>(p.x), static_cast<float>(p.y), laser, power});

@@ -40,6 +40,8 @@ struct LagPattern {
   std::vector<double> speeds_mm_s;
   std::vector<LagLine> lines;  // per axis, per speed: the forward line, then the backward one
 
+  // The fastest line's speed: full laser power there, the others in proportion.
+  double fastest_mm_s() const;
   // The commanded lines' extent (mm).
   Vec2 min() const;
   Vec2 max() const;

@@ -17,10 +17,8 @@ GreyImage photograph_lag_pattern(const SimScannerOptions& head, const LagPattern
   for (std::size_t i = 0; i < samples.size(); i += kBlock)
     scanner.write(std::span<const ScanSample>(samples).subspan(i, std::min(kBlock, samples.size() - i)));
 
-  double fastest = 0;
-  for (const LagLine& l : pattern.lines) fastest = std::max(fastest, l.speed_mm_s);
   MarkResponse response;
-  response.reference_speed_mm_s = fastest;  // full power there marks one spot wide
+  response.reference_speed_mm_s = pattern.fastest_mm_s();  // full power there marks one spot wide
   response.reference_width_mm = response.spot_diameter_mm;
 
   const Vec2 lo = pattern.min(), hi = pattern.max();

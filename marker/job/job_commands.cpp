@@ -3,12 +3,10 @@
 // watcher turns a stop request into device.abort() whether the board is taking commands or
 // finishing them.
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <limits>
-#include <thread>
 
 #include "base/error.hpp"
+#include "marker/job/board_watcher.hpp"
 #include "marker/job/device_program.hpp"
 #include "marker/job/job_run.hpp"
 #include "marker/job/program_stream.hpp"
@@ -29,22 +27,7 @@ void run_commands(const JobSpec& spec, const JobOptions& options, CommandDevice&
   header.pens.front() = stream.pen();
   device.begin_job(header);
 
-  std::atomic<bool> finished{false};
-  std::atomic<std::int64_t> aborted_at_ns{0};
-  const auto stop_board = [&] {
-    device.abort();
-    std::int64_t none = 0;
-    aborted_at_ns.compare_exchange_strong(none, StopFlag::now_ns(), std::memory_order_acq_rel);
-  };
-  std::thread watcher;
-  if (options.stop) {
-    watcher = std::thread([&] {
-      while (!finished.load(std::memory_order_acquire)) {
-        if (options.stop->requested()) return stop_board();
-        std::this_thread::sleep_for(std::chrono::microseconds(200));
-      }
-    });
-  }
+  BoardStopWatcher watcher(device, options.stop);
 
   const std::uint64_t abort_at = options.inject.kind == Injection::Kind::abort
                                      ? options.inject.at
@@ -60,13 +43,13 @@ void run_commands(const JobSpec& spec, const JobOptions& options, CommandDevice&
     } catch (const DeviceFaultError& e) {
       // The worker met a point it could not convert (the plan's reach said it could not): the
       // board has part of the job, so it is stopped like on any fault.
-      stop_board();
+      watcher.stop_board();
       fault = e.fault();
       break;
     }
     if (chunk.empty()) break;
-    if ((options.stop && options.stop->requested()) || i >= abort_at) {
-      stop_board();
+    if (watcher.stop_requested() || i >= abort_at) {
+      watcher.stop_board();
       break;
     }
     try {
@@ -78,8 +61,7 @@ void run_commands(const JobSpec& spec, const JobOptions& options, CommandDevice&
     i += chunk.size();
   }
   result.device = device.end_job();
-  finished.store(true, std::memory_order_release);
-  if (watcher.joinable()) watcher.join();
+  watcher.finish();
 
   const DeviceProgram program = stream.finish();
   result.commands = program.commands.size();
@@ -91,9 +73,7 @@ void run_commands(const JobSpec& spec, const JobOptions& options, CommandDevice&
     result.stopped_at = result.device.commands_done;
     result.ink_marked = ink_fraction(program, result.device.commands_done);
   }
-  const std::int64_t asked = options.stop ? options.stop->requested_at_ns() : 0;
-  const std::int64_t aborted = aborted_at_ns.load(std::memory_order_acquire);
-  if (asked > 0 && aborted >= asked) result.stop_latency_us = static_cast<double>(aborted - asked) / 1e3;
+  if (const double latency = watcher.stop_latency_us(); latency >= 0) result.stop_latency_us = latency;
 }
 
 }  // namespace mark

@@ -5,9 +5,10 @@
 //
 // For a head that reports no position, from a picture of a mark instead (docs/speed.md,
 // "Identification from a picture"):
-//   `marker head test-pattern [--head …] [--plant …] [-o pattern.json] [--picture scan.png]`
-//   marks the lag test pattern (marker/head/lag_pattern.hpp) on the simulated head and writes
-//   the pattern file and its scan;
+//   `marker head test-pattern [--head …] [--plant …] [--device DEV] [-o pattern.json]
+//   [--picture scan.png]` marks the lag test pattern (marker/head/lag_pattern.hpp) on the
+//   simulated head (or on an LMC board, real or emulated: marker/head/lag_program.hpp) and
+//   writes the pattern file, and its scan where the device is simulated;
 //   `marker head identify --from-image scan.png --pixel-um P --pattern pattern.json` fits the
 //   ramp lag from the picture and saves it as a first-order profile, the limits the --head
 //   preset's (a picture does not show them).
@@ -16,17 +17,26 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "driver/lmc/lmc_spec.hpp"
 #include "driver/sim/grey_png.hpp"
 #include "marker/cli/commands.hpp"
 #include "marker/cli/console_progress.hpp"
+#include "marker/cli/device_factory.hpp"
 #include "marker/cli/head_options.hpp"
+#include "marker/cli/interrupt.hpp"
+#include "marker/cli/lmc_options.hpp"
 #include "marker/cli/option_ranges.hpp"
 #include "marker/cli/output_options.hpp"
+#include "marker/cli/pen_options.hpp"
 #include "marker/cli/plant_option.hpp"
 #include "marker/head/head_fit.hpp"
 #include "marker/head/lag_fit.hpp"
 #include "marker/head/lag_photo.hpp"
+#include "marker/head/lag_program.hpp"
+#include "marker/job/board_watcher.hpp"
 #include "marker/limits/head_settings.hpp"
+#include "marker/limits/marking_settings.hpp"
+#include "marker/limits/pen_settings.hpp"
 #include "marker/output/output_file.hpp"
 
 namespace mark::cli {
@@ -122,7 +132,63 @@ struct PatternArgs {
   std::string output = "lag-pattern.json";
   std::string picture = "lag-pattern.png";
   bool json = false;
+  std::string device{kDevice.value};
+  LmcArgs lmc;
+  LaserSettings laser;
+  std::string source{kLaserSource.value};
+  bool virtual_time = false;
+  std::vector<const CLI::Option*> board_options;  // refused with --device sim
+  const CLI::Option* picture_option = nullptr;     // refused with a real board
 };
+
+struct MarkedPattern {
+  std::string device;                 // the device's name
+  std::optional<GreyImage> picture;   // none from a real board: the user scans the part
+};
+
+// On a command-level board (the LMC, the emulated one): the pattern as a bare program, Ctrl-C
+// aborting the board (laser off) within the watcher's poll, and a picture from the simulated
+// scanner behind an emulated board.
+MarkedPattern mark_on_board(const PatternArgs& a, const SimScannerOptions& sim, const LagPattern& pattern) {
+  JobSpec job;
+  job.head = sim.head;
+  job.laser = a.laser;
+  job.laser.source = *parse_laser_source(a.source);
+  check_laser_settings(job.laser, "--source " + a.source + ": ");
+  SimSettings settings;
+  settings.laser_rise_s = sim.laser_rise_s;
+  settings.plant = sim.plant;
+  settings.virtual_time = a.virtual_time;
+  // Refused before the device opens (a capture file would be begun): only a simulated head
+  // (behind the emulated board) has a plant and gives a picture.
+  const auto spec = lmc::parse_lmc_spec(a.device);
+  if (spec && !spec->emulated) {
+    if (!settings.plant.is_model())
+      throw InputError("--plant '" + a.head.plant + "': a real board drives its own head; the plant is the simulated one's");
+    if (a.picture_option->count() > 0)
+      throw InputError("--picture: a real board's mark is on the part; scan or photograph it and give that picture to "
+                       "`marker head identify --from-image`");
+  }
+  const OpenedDevice opened = open_device(a.device, job, settings, a.lmc);
+  CommandDevice* board = opened.device->as_command_device();
+  if (!board) throw InputError("--device '" + a.device + "': the lag pattern on a device goes to a board (lmc…)");
+  const DeviceDescription desc = opened.device->describe();
+  const LagProgram program = lag_pattern_program(pattern, job.laser, desc);
+  if (!a.json)
+    std::fprintf(stderr, "marking the lag pattern on %s (%zu commands); Ctrl-C stops it with the laser off\n",
+                 desc.name.c_str(), program.commands.size());
+  const DeviceReport report = run_board_program(*board, program.header, program.commands, &interrupt_flag());
+  if (report.outcome == DeviceState::aborted)
+    throw Interrupted("marking the lag pattern on " + desc.name + " (" + std::to_string(report.commands_done) +
+                      " of " + std::to_string(program.commands.size()) + " commands done, laser off)");
+  if (report.outcome != DeviceState::done)
+    throw InputError("the lag pattern on " + desc.name + " failed: " +
+                     (report.fault ? report.fault->message : std::string("the board ended the job")) +
+                     "; nothing was written");
+  MarkedPattern marked{desc.name, std::nullopt};
+  if (opened.simulator) marked.picture = photograph_lag_dose(opened.simulator->scanner().dose(), pattern);
+  return marked;
+}
 
 int test_pattern(const PatternArgs& a) {
   check_standard_output({{"--output", &a.output}, {"--picture", &a.picture}}, a.json);
@@ -133,29 +199,49 @@ int test_pattern(const PatternArgs& a) {
   sim.laser_rise_s = a.head.laser_rise_us * 1e-6;
   sim.plant = parse_plant_option(a.head.plant);
   const LagPattern pattern = lag_pattern(sim.head);
-  // Ctrl-C before the files are written stops the command with nothing written (the watchdog).
-  ConsoleProgress progress = command_progress(a.json);
-  progress.step("marking and photographing the lag pattern", 0, 1);
-  const GreyImage picture = photograph_lag_pattern(sim, pattern);
-  progress.writing_files();
+  MarkedPattern marked;
+  if (a.device == "sim") {
+    for (const CLI::Option* o : a.board_options)
+      if (o->count() > 0)
+        throw InputError(o->get_name() + " applies to a board (--device lmc…); the simulator marks the pattern "
+                                         "at full power on its fastest line");
+    // Ctrl-C before the files are written stops the command with nothing written (the watchdog).
+    ConsoleProgress progress = command_progress(a.json);
+    progress.step("marking and photographing the lag pattern", 0, 1);
+    marked = {"the simulator", photograph_lag_pattern(sim, pattern)};
+    progress.writing_files();
+  } else {
+    marked = mark_on_board(a, sim, pattern);
+  }
   write_file_whole(a.output, lag_pattern_json(pattern));
-  write_file_whole(a.picture, encode_grey_png(picture));
+  if (marked.picture) write_file_whole(a.picture, encode_grey_png(*marked.picture));
   const Vec2 lo = pattern.min(), hi = pattern.max();
   if (a.json) {
     nlohmann::ordered_json j;
     j["head"] = sim.head.name;
+    j["device"] = marked.device;
     j["pattern"] = a.output;
-    j["picture"] = a.picture;
-    j["pixel_um"] = picture.pixel_mm * 1e3;
-    j["width_px"] = picture.width;
-    j["height_px"] = picture.height;
     j["lines"] = pattern.lines.size();
     j["speeds_mm_s"] = pattern.speeds_mm_s;
+    if (marked.picture) {
+      j["picture"] = a.picture;
+      j["pixel_um"] = marked.picture->pixel_mm * 1e3;
+      j["width_px"] = marked.picture->width;
+      j["height_px"] = marked.picture->height;
+    }
     std::cout << j.dump(2) << "\n";
     return 0;
   }
-  std::printf("head %s: lag pattern of %zu lines (%g × %g mm), every delay zero, marked on the simulator\n",
-              sim.head.name.c_str(), pattern.lines.size(), hi.x - lo.x, hi.y - lo.y);
+  std::printf("head %s: lag pattern of %zu lines (%g × %g mm), every delay zero, marked on %s\n",
+              sim.head.name.c_str(), pattern.lines.size(), hi.x - lo.x, hi.y - lo.y, marked.device.c_str());
+  if (!marked.picture) {
+    std::printf("wrote %s; scan or photograph the part square-on at %g µm per pixel or finer, then\n",
+                a.output.c_str(), kLagPhotoPixelUm);
+    std::printf("  marker head identify --from-image SCAN.png --pixel-um P --pattern %s --head %s\n",
+                a.output.c_str(), sim.head.name.c_str());
+    return 0;
+  }
+  const GreyImage& picture = *marked.picture;
   std::printf("wrote %s and %s (%d × %d px of %g µm); fit it with\n", a.output.c_str(), a.picture.c_str(),
               picture.width, picture.height, picture.pixel_mm * 1e3);
   std::printf("  marker head identify --from-image %s --pixel-um %g --pattern %s --head %s\n", a.picture.c_str(),
@@ -186,11 +272,23 @@ Command make_head_command() {
             ->check(CLI::ExistingFile);
         add_setting(*sub, kPicturePixel, a->pixel_um);
         auto* pat = head->add_subcommand(
-            "test-pattern", "mark the lag test pattern on the simulated head and write its pattern file and scan");
+            "test-pattern", "mark the lag test pattern (on the simulated head, the emulated or a real LMC board) and write its pattern file, and its scan where the device is simulated");
         add_head_options(*pat, t->head, true);
         pat->add_option("-o,--output", t->output, "pattern file to write (.json; default lag-pattern.json)");
-        pat->add_option("--picture", t->picture, "the scan of the marked pattern to write (.png; default lag-pattern.png)");
+        t->picture_option = pat->add_option(
+            "--picture", t->picture,
+            "the scan of the marked pattern to write, where the device is simulated (.png; default lag-pattern.png)");
         pat->add_flag("--json", t->json, "print a summary as JSON");
+        add_setting(*pat, kDevice, t->device);
+        add_setting(*pat, kVirtualTime, t->virtual_time);
+        // The board's options: the simulator marks at full power on the fastest line, no board
+        // between, so there they would be ignored; they are refused instead.
+        const std::size_t before = pat->get_options().size();
+        add_lmc_options(*pat, t->lmc);
+        add_laser_options(*pat, t->laser);
+        add_setting(*pat, kLaserSource, t->source);
+        const auto options = pat->get_options();
+        t->board_options.assign(options.begin() + static_cast<std::ptrdiff_t>(before), options.end());
         *pattern_app = pat;
         return head;
       },

@@ -14,11 +14,6 @@ namespace {
 constexpr const char* kFormat = "marker lag pattern";
 constexpr int kVersion = 1;
 
-// After a jump: long enough for the slowest plausible head (τ to ~0.6 ms) to come to rest far
-// below a micrometre, as head_response.cpp's holds; after a line, for the beam to catch up with
-// the laser off.
-constexpr double kJumpSettle_s = 12e-3;
-constexpr double kAfterLine_s = 2e-3;
 
 // Lays the lines out from the pattern's parameters (one function, so a parsed pattern is the
 // very one that was marked).
@@ -119,13 +114,13 @@ std::vector<ScanSample> lag_pattern_samples(const LagPattern& pattern, double ti
     for (std::size_t i = 0; i < n; ++i) emit(p, false, 0);
   };
   for (const LagLine& l : pattern.lines) {
-    hold(l.start, kJumpSettle_s);
+    hold(l.start, kLagJumpSettle_s);
     const double length = norm(l.end - l.start);
     const auto n = static_cast<std::size_t>(std::ceil(length / (l.speed_mm_s * tick_s) - 1e-9));
     const auto power = static_cast<std::uint8_t>(std::clamp(std::lround(255 * l.speed_mm_s / fastest), 1L, 255L));
     for (std::size_t i = 1; i <= n; ++i)
       emit(l.start + (static_cast<double>(i) / static_cast<double>(n)) * (l.end - l.start), true, power);
-    hold(l.end, kAfterLine_s);
+    hold(l.end, kLagAfterLine_s);
   }
   return out;
 }

@@ -47,6 +47,12 @@ struct LagPattern {
   Vec2 max() const;
 };
 
+// After a jump: long enough for the slowest plausible head (τ to ~0.6 ms) to come to rest far
+// below a micrometre, as head_response.cpp's holds; after a line, for the beam to catch up with
+// the laser off. The same on every device (samples or a board's dwells).
+inline constexpr double kLagJumpSettle_s = 12e-3;
+inline constexpr double kLagAfterLine_s = 2e-3;
+
 // The pattern for this head: speeds 500, 1000, 2000, 3000, 4000 mm/s up to 40 % of its speed
 // limit (at least three: slower ones are added below 500 for a slow head), centred on `centre`.
 // Throws InputError when it does not fit in the head's field.

@@ -16,7 +16,10 @@ GreyImage photograph_lag_pattern(const SimScannerOptions& head, const LagPattern
   constexpr std::size_t kBlock = 100;
   for (std::size_t i = 0; i < samples.size(); i += kBlock)
     scanner.write(std::span<const ScanSample>(samples).subspan(i, std::min(kBlock, samples.size() - i)));
+  return photograph_lag_dose(scanner.dose(), pattern, camera);
+}
 
+GreyImage photograph_lag_dose(const DoseRaster& dose, const LagPattern& pattern, CameraSettings camera) {
   MarkResponse response;
   response.reference_speed_mm_s = pattern.fastest_mm_s();  // full power there marks one spot wide
   response.reference_width_mm = response.spot_diameter_mm;
@@ -25,10 +28,10 @@ GreyImage photograph_lag_pattern(const SimScannerOptions& head, const LagPattern
   const double margin = 1.5;
   const FieldWindow window{lo.x - margin, lo.y - margin, hi.x + margin, hi.y + margin};
   if (camera.pixel_um == 0) camera.pixel_um = kLagPhotoPixelUm;
-  const double px = camera_pixel_mm(camera, window, scanner.dose().pixel_mm());
+  const double px = camera_pixel_mm(camera, window, dose.pixel_mm());
   camera.sensor_width_px = std::max(camera.sensor_width_px, static_cast<int>(std::ceil(window.width() / px)) + 1);
   camera.sensor_height_px = std::max(camera.sensor_height_px, static_cast<int>(std::ceil(window.height() / px)) + 1);
-  return photograph(scanner.dose(), window, response, camera, false, px).picture;
+  return photograph(dose, window, response, camera, false, px).picture;
 }
 
 }  // namespace mark

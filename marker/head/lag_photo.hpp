@@ -1,7 +1,7 @@
 #pragma once
 // The lag test pattern marked on the simulated head — the plant as it is, which the fit is not
 // told — and photographed as a flatbed scan or a camera over the whole pattern would take it:
-// what `marker head test-pattern` gives on the simulator, and the picture `marker head identify
+// what `marker head test-pattern` gives on the simulator (and behind the emulated board), and the picture `marker head identify
 // --from-image` fits.
 #include "base/grey_image.hpp"
 #include "driver/sim/camera_model.hpp"
@@ -19,5 +19,9 @@ inline constexpr double kLagPhotoPixelUm = 10;
 // trips, std::invalid_argument for camera settings outside their ranges.
 GreyImage photograph_lag_pattern(const SimScannerOptions& head, const LagPattern& pattern,
                                  CameraSettings camera = {});
+
+// The photograph alone, of a pattern already marked into `dose` (by the emulated board's
+// scanner, say), with the same material and camera.
+GreyImage photograph_lag_dose(const DoseRaster& dose, const LagPattern& pattern, CameraSettings camera = {});
 
 }  // namespace mark

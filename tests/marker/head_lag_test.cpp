@@ -7,16 +7,24 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <numbers>
+#include <thread>
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "driver/lmc/capture_link.hpp"
+#include "driver/lmc/codec.hpp"
 #include "driver/sim/grey_png.hpp"
+#include "marker/cli/emulated_lmc_device.hpp"
 #include "marker/head/head_profile.hpp"
 #include "marker/head/lag_fit.hpp"
 #include "marker/head/lag_photo.hpp"
+#include "marker/head/lag_program.hpp"
+#include "marker/job/board_watcher.hpp"
 #include "marker/image/gray_image.hpp"
 #include "tests/marker/cli_runner.hpp"
 
@@ -209,6 +217,185 @@ TEST(HeadLag, ThePatternFileRoundTripsAndABadOneIsRefusedNamingTheKey) {
   EXPECT_EQ(refusal(R"({"format": "marker lag pattern", "version": "1"})"), "lag pattern p.json: 'version' must be 1");
   EXPECT_NE(refusal("[1,").find("lag pattern p.json: not JSON ("), std::string::npos);
   EXPECT_EQ(refusal("[1]"), "lag pattern p.json: must be one JSON object");
+}
+
+// The board's program: one pen per speed with the power in proportion and every delay zero (a
+// delay would read as lag), the holds split at the board's longest dwell, and a pattern outside
+// the board's field or faster than it marks refused before anything is sent.
+TEST(HeadLag, TheBoardProgramHasOnePenPerSpeedItsPowerInProportionAndNoDelay) {
+  const LagPattern pattern = lag_pattern(head_sl10());
+  DeviceDescription board;
+  board.name = "board";
+  board.level = DeviceLevel::commands;
+  board.max_dwell_s = 5e-3;  // the 12 ms settle goes as three dwells, the 2 ms hold as one
+  LaserSettings laser;
+  laser.power_pct = 80;
+  const LagProgram p = lag_pattern_program(pattern, laser, board);
+  ASSERT_EQ(p.header.pens.size(), pattern.speeds_mm_s.size());
+  for (std::size_t i = 0; i < p.header.pens.size(); ++i) {
+    const DevicePen& pen = p.header.pens[i];
+    EXPECT_DOUBLE_EQ(pen.mark_speed_mm_s, pattern.speeds_mm_s[i]);
+    EXPECT_NEAR(pen.laser.power_pct, 80 * pattern.speeds_mm_s[i] / 4000, 1e-9);
+    EXPECT_EQ(pen.laser_on_delay_s + pen.laser_off_delay_s + pen.jump_delay_s + pen.mark_delay_s + pen.polygon_delay_s,
+              0.0);
+  }
+  std::size_t marks = 0, dwells = 0, pens = 0;
+  double held_s = 0;
+  for (const DeviceCommand& c : p.commands) {
+    marks += c.op == DeviceOp::mark;
+    pens += c.op == DeviceOp::pen;
+    if (c.op != DeviceOp::dwell) continue;
+    ++dwells;
+    EXPECT_FALSE(c.laser);
+    EXPECT_LE(c.dwell_s, board.max_dwell_s + 1e-12);
+    held_s += c.dwell_s;
+  }
+  EXPECT_EQ(marks, pattern.lines.size());
+  EXPECT_EQ(pens, 2 * pattern.speeds_mm_s.size());  // each axis runs through the speeds once
+  EXPECT_EQ(dwells, 4 * pattern.lines.size());
+  EXPECT_NEAR(held_s, pattern.lines.size() * (kLagJumpSettle_s + kLagAfterLine_s), 1e-9);
+  EXPECT_EQ(p.header.lit_paths.size(), pattern.lines.size());
+
+  DeviceDescription small = board;
+  small.field_mm = 20;
+  EXPECT_THROW(
+      {
+        try {
+          lag_pattern_program(pattern, laser, small);
+        } catch (const InputError& e) {
+          EXPECT_NE(std::string(e.what()).find("outside the 20 mm field of board"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      InputError);
+  DeviceDescription slow = board;
+  slow.max_speed_mm_s = 3000;
+  EXPECT_THROW(lag_pattern_program(pattern, laser, slow), InputError);
+}
+
+// The whole LMC path without a board — the program as the real driver's list packets, the
+// emulated board running them on its own clock, its output into a simulated head whose plant
+// the fit is not told — photographed and fitted: the plant's ramp lag within 5 %.
+TEST(HeadLag, MarkedThroughTheEmulatedBoardThePictureRecoversThePlantLag) {
+  const HeadModel sl10 = head_sl10();
+  Plant slow, dead;
+  slow.tau_scale = 1.1;
+  dead.dead_us = 10, dead.noise_um = 1;
+  const PlantCase cases[] = {{"tau_scale=1.1", slow, 1.1 * sl10.tau_s}, {"dead_us=10,noise_um=1", dead, sl10.tau_s - 10e-6}};
+  const LagPattern pattern = lag_pattern(sl10);
+  for (const PlantCase& c : cases) {
+    SimScannerOptions head;
+    head.head = sl10;
+    head.plant = c.plant;
+    lmc::LmcOptions o;
+    o.field_mm = sl10.field_mm;
+    o.init.settle_s = 0;
+    cli::EmulatedLmcDevice board(head, o, *lmc::parse_lmc_spec("lmc-emulated"), true);
+    const LagProgram program = lag_pattern_program(pattern, LaserSettings{}, board.describe());
+    const DeviceReport report = run_board_program(board, program.header, program.commands, nullptr);
+    ASSERT_EQ(report.outcome, DeviceState::done) << c.name;
+    EXPECT_EQ(report.commands_done, program.commands.size()) << c.name;
+    const GreyImage picture = photograph_lag_dose(board.scanner().dose(), pattern);
+    const LagFit fit = fit_lag_from_image(through_png(picture), picture.pixel_mm, pattern, "board.png");
+    EXPECT_NEAR(fit.tau_s / c.lag_s, 1.0, 0.05) << c.name << ": fitted " << fit.tau_s * 1e6 << " µs";
+    EXPECT_NEAR(fit.tau_x_s / c.lag_s, 1.0, 0.05) << c.name;
+    EXPECT_NEAR(fit.tau_y_s / c.lag_s, 1.0, 0.05) << c.name;
+  }
+}
+
+// Ctrl-C on the board: the stop aborts it (laser off) and the report says how far it got — a
+// stop before the first command sends none; one in the middle (the board in real time, the
+// stop once 30 commands were sent) leaves the rest unmarked.
+TEST(HeadLag, AStopAbortsTheBoardWithTheLaserOffAndSaysHowFarItGot) {
+  const LagPattern pattern = lag_pattern(head_sl10());
+  SimScannerOptions head;
+  head.head = head_sl10();
+  lmc::LmcOptions o;
+  o.init.settle_s = 0;
+  const auto whole = lag_pattern_samples(pattern, head.tick_s).size();  // the pattern run through
+  for (const bool at_once : {true, false}) {
+    cli::EmulatedLmcDevice board(head, o, *lmc::parse_lmc_spec("lmc-emulated"), false);
+    const LagProgram program = lag_pattern_program(pattern, LaserSettings{}, board.describe());
+    StopFlag stop;
+    if (at_once) stop.request();
+    std::atomic<bool> ended{false};
+    std::thread op([&] {
+      // Also ends when the job did (it then fails below, naming the outcome): never waits for ever.
+      while (!ended.load() && board.status().progress < 30) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      stop.request();
+    });
+    const DeviceReport report = run_board_program(board, program.header, program.commands, &stop);
+    ended.store(true);
+    op.join();
+    ASSERT_EQ(report.outcome, DeviceState::aborted) << (at_once ? "at once" : "mid-way") << ": "
+                                                    << to_string(report.outcome);
+    EXPECT_FALSE(board.status().laser_on);
+    EXPECT_FALSE(board.scanner().laser_commanded());
+    // The board says only what it was sent (docs/lmc.md); what it ran shows in the scanner's clock.
+    if (at_once) {
+      EXPECT_EQ(report.commands_done, 0u);
+    }
+    EXPECT_LT(board.scanner().samples(), 0.8 * static_cast<double>(whole));
+  }
+}
+
+// On a real board (here its bytes captured): the pattern file and no picture (the user scans
+// the part); on the wire one MarkTo per line, the power words in proportion to the speed words
+// and zero laser delays.
+TEST(HeadLagCli, TestPatternOnABoardSendsOneMarkPerLineWithPowerInProportion) {
+  const auto dir = test::fresh_temp_dir("head_lag_board");
+  const std::string pattern = (dir / "p.json").string(), picture = (dir / "p.png").string(),
+                    capture = (dir / "p.lmc").string();
+  const auto r = test::run_cli(
+      {"head", "test-pattern", "--device", "lmc-capture:" + capture, "--power", "60", "-o", pattern, "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["device"], "lmc 00000000");
+  EXPECT_FALSE(j.contains("picture"));
+  EXPECT_FALSE(std::filesystem::exists(picture));
+  EXPECT_NO_THROW(load_lag_pattern(pattern));
+  std::size_t marks = 0;
+  std::vector<double> powers;
+  for (const lmc::CaptureRecord& rec : lmc::read_capture(capture))
+    for (const lmc::Word& w : rec.words) {
+      const auto op = static_cast<lmc::Op>(w.opcode());
+      marks += op == lmc::Op::MarkTo;
+      if (op == lmc::Op::MarkCurrent) powers.push_back(100.0 * w.p(1) / 4095);
+      if (op == lmc::Op::LaserOnDelay || op == lmc::Op::LaserOffDelay) {
+        EXPECT_EQ(w.p(1), 0) << "a laser delay";
+      }
+    }
+  EXPECT_EQ(marks, 20u);
+  std::vector<double> expected;
+  for (double v : {500.0, 1000.0, 2000.0, 3000.0, 4000.0}) expected.push_back(60 * v / 4000);
+  std::sort(powers.begin(), powers.end());
+  powers.erase(std::unique(powers.begin(), powers.end(), [](double a, double b) { return std::abs(a - b) < 0.05; }),
+               powers.end());
+  ASSERT_EQ(powers.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(powers[i], expected[i], 0.03);
+
+  const auto emulated = test::run_cli({"head", "test-pattern", "--device", "lmc-emulated", "--virtual-time",
+                                       "--plant", "tau_scale=0.9", "-o", pattern, "--picture", picture, "--json"});
+  ASSERT_EQ(emulated.code, 0) << emulated.err;
+  const auto fitted = test::run_cli({"head", "identify", "--from-image", picture, "--pixel-um", "10", "--pattern",
+                                     pattern, "-o", (dir / "h.json").string(), "--json"});
+  ASSERT_EQ(fitted.code, 0) << fitted.err;
+  EXPECT_NEAR(nlohmann::json::parse(fitted.out)["tau_s"].get<double>() / (0.9 * head_sl10().tau_s), 1.0, 0.05);
+
+  const auto sim_power = test::run_cli({"head", "test-pattern", "--power", "50", "-o", pattern, "--picture", picture});
+  EXPECT_EQ(sim_power.code, 1);
+  EXPECT_NE(sim_power.err.find("--power applies to a board (--device lmc…)"), std::string::npos) << sim_power.err;
+  const std::string unused = (dir / "unused.lmc").string();
+  const auto real_plant = test::run_cli({"head", "test-pattern", "--device", "lmc-capture:" + unused, "--plant",
+                                         "tau_scale=1.1", "-o", pattern});
+  EXPECT_EQ(real_plant.code, 1);
+  EXPECT_NE(real_plant.err.find("a real board drives its own head"), std::string::npos) << real_plant.err;
+  const auto real_picture = test::run_cli({"head", "test-pattern", "--device", "lmc-capture:" + unused, "--picture",
+                                           picture, "-o", pattern});
+  EXPECT_EQ(real_picture.code, 1);
+  EXPECT_NE(real_picture.err.find("--picture: a real board's mark is on the part"), std::string::npos)
+      << real_picture.err;
+  EXPECT_FALSE(std::filesystem::exists(unused));  // refused before the capture began
 }
 
 TEST(HeadLagCli, TestPatternThenIdentifyFromImageWritesAProfileTheMarkCommandTakes) {

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "base/input_file.hpp"
 #include "driver/lmc/codec.hpp"
 
 namespace mark::lmc {
@@ -100,12 +101,13 @@ void check_cor_lens(const CorrectionTable& t, double field_mm) {
 }
 
 CorrectionTable read_cor_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw CorFileError(path + ": cannot open the correction file");
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
-                                  std::istreambuf_iterator<char>());
-  if (bytes.size() > (1u << 20)) bad(path, "is larger than 1 MiB: not a correction file");
-  return parse_cor(bytes, path);
+  std::string text;
+  try {
+    text = read_input_file(path, "correction file", 1u << 20);
+  } catch (const InputError& e) {
+    throw CorFileError(e.what());
+  }
+  return parse_cor(std::vector<std::uint8_t>(text.begin(), text.end()), path);
 }
 
 }  // namespace mark::lmc

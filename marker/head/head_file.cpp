@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/input_file.hpp"
 
 namespace mark {
 namespace {
@@ -22,12 +23,7 @@ void head_file_error(const HeadFileKind& kind, std::string_view where, const std
 }
 
 std::string read_head_file(const HeadFileKind& kind, const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) head_file_error(kind, path, "cannot be read");
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (s.str().size() > (1u << 20)) head_file_error(kind, path, "larger than 1 MiB");
-  return s.str();
+  return read_input_file(path, kind.name, 1u << 20);
 }
 
 nlohmann::json parse_head_file(const HeadFileKind& kind, std::string_view text, std::string_view where) {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/input_file.hpp"
 #include "driver/device_error.hpp"
 #include "driver/lmc/lmc_spec.hpp"
 #include "marker/job/head_pen.hpp"
@@ -442,12 +443,7 @@ JobFile parse_job(std::string_view text, const std::string& source) {
 }
 
 JobFile read_job_file(const std::string& path, std::string* bytes) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the job file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  const std::string text = s.str();
-  if (text.size() > (16u << 20)) throw InputError(path + ": a job file is at most 16 MiB");
+  const std::string text = read_input_file(path, "job file", 16u << 20);
   JobFile job = parse_job(text, path);
   if (bytes) *bytes = text;
   return job;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/input_file.hpp"
 #include "marker/limits/data_list_limits.hpp"
 
 namespace mark {
@@ -155,16 +156,7 @@ DataList DataList::parse(std::string_view text, const std::string& source, char 
 }
 
 DataList DataList::read(const std::string& path, char delimiter) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the data list");
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size > kDataListMaxBytes)
-    throw InputError(path + ": a data list is at most " + std::to_string(kDataListMaxBytes >> 20) + " MiB");
-  in.seekg(0);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return parse(s.str(), path, delimiter);
+  return parse(read_input_file(path, "data list", static_cast<std::size_t>(kDataListMaxBytes)), path, delimiter);
 }
 
 std::optional<std::size_t> DataList::column(std::string_view name) const {

@@ -84,7 +84,7 @@ TEST(PenOptions, BadValuesAreRefusedByName) {
             "--jump-speed: 50000 is outside the range 1 to 19200 mm/s (head SL10's positioning limit)");
   EXPECT_NE(error("--corner wavy").find("'wavy' is not one of blanking, delays, none"), std::string::npos);
   EXPECT_NE(error("--speed 0").find("--speed: 0 is outside the range"), std::string::npos);
-  EXPECT_NE(error("--head-profile /nonexistent.json").find("cannot be read"), std::string::npos);
+  EXPECT_NE(error("--head-profile /nonexistent.json").find("/nonexistent.json: cannot read the head profile: No such file or directory"), std::string::npos);
   // A profile identified on another head is refused, naming both.
   const auto sa14 = test::fresh_temp_file("pen_options_test", "sa14.json");
   ASSERT_EQ(test::run_cli({"head", "identify", "--head", "SA14", "-o", sa14.string()}).code, 0);

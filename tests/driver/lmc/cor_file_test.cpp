@@ -86,6 +86,17 @@ TEST(LmcCorFile, ReadsFromDiskAndRefusesWhatDoesNotFit) {
   expect_pattern(read_cor_file(path.string()));
   std::filesystem::remove(path);
   EXPECT_THROW(read_cor_file(path.string()), CorFileError);
+  // A directory or an endless device: one line naming it, not a raw stream error or bad_alloc.
+  for (const auto& [bad, why] : {std::pair{"/tmp", "/tmp: cannot read the correction file: it is a directory"},
+                                 {"/dev/zero", "/dev/zero: cannot read the correction file: longer than 1 MiB, the most a "
+                                               "correction file may be"}}) {
+    try {
+      read_cor_file(bad);
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const CorFileError& e) {
+      EXPECT_STREQ(e.what(), why);
+    }
+  }
 
   auto b = legacy_file(1);
   b.resize(b.size() - 1);

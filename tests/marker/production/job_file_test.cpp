@@ -174,13 +174,21 @@ TEST(JobFile, ShiftResetNeedsShifts) {
             "job.json: counters.n.reset: a reset at shift start needs the job's \"shifts\"");
 }
 
-TEST(JobFile, MissingFileNamesIt) {
-  try {
-    read_job_file("/nonexistent/job.json");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "/nonexistent/job.json: cannot open the job file");
-  }
+// Every file the user names is read bounded (base/input_file.hpp): a missing file, a directory
+// and an endless device are each refused in one line, the endless one after the bound (16 MiB)
+// rather than when memory runs out.
+TEST(JobFile, AMissingFileADirectoryOrAnEndlessDeviceIsRefusedNamingIt) {
+  const auto refusal = [](const std::string& path) {
+    try {
+      read_job_file(path);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal("/nonexistent/job.json"), "/nonexistent/job.json: cannot read the job file: No such file or directory");
+  EXPECT_EQ(refusal("/tmp"), "/tmp: cannot read the job file: it is a directory");
+  EXPECT_EQ(refusal("/dev/zero"), "/dev/zero: cannot read the job file: longer than 16 MiB, the most a job file may be");
 }
 
 }  // namespace

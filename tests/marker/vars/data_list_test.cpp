@@ -77,7 +77,7 @@ TEST(DataList, ReadRefusesAMissingFile) {
     DataList::read("/nonexistent/plates.csv");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "/nonexistent/plates.csv: cannot open the data list");
+    EXPECT_STREQ(e.what(), "/nonexistent/plates.csv: cannot read the data list: No such file or directory");
   }
 }
 

@@ -37,6 +37,15 @@ struct Plant {
   // passes this share of its peak acceleration. 0 %: none.
   double rms_accel_pct = 0;
   double thermal_tau_s = 1;
+  // The amplifier's current loop (0 µs: none, the current — the acceleration — is what the servo
+  // asks at once). With it, the servo's velocity loop asks for an acceleration
+  // (want − v) / (4·τi), critically damped with the current loop, and the current follows that
+  // demand with the loop's lag τi; a first-order head stays first order on a ramp (the same lag
+  // v·τ) but its corners and jumps ring.
+  double current_tau_us = 0;
+  // With the current loop: how fast the current may change (the supply voltage over the coil's
+  // inductance), as a jerk limit on the mirror, mm/s³ (0: none).
+  double jerk_max_mm_s3 = 0;
   // Beam position noise: rms per axis, correlated over the servo's τ (an Ornstein–Uhlenbeck
   // process), from a generator seeded with `seed` at every job's start.
   double noise_um = 0;
@@ -48,7 +57,8 @@ struct Plant {
   // True when it adds nothing to the preset.
   bool is_model() const {
     return tau_scale == 1 && wn_scale == 1 && dead_us == 0 && latency_us == 0 && resonance_hz == 0 && accel_max_mm_s2 == 0 &&
-           backemf_speed_mm_s == 0 && rms_accel_pct == 0 && noise_um == 0 && quant_bits == 0;
+           backemf_speed_mm_s == 0 && rms_accel_pct == 0 && current_tau_us == 0 && jerk_max_mm_s3 == 0 && noise_um == 0 &&
+           quant_bits == 0;
   }
 };
 

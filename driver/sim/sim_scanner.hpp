@@ -121,6 +121,7 @@ class SimScanner : public SampleDevice<ScanSample> {
   void follow(const ScanSample& s);
   void step_axis(Axis& a, const Axis& seen, double cmd, double rate, double dt) const;
   double allowed_dv(const Axis& a, double dv, double dt) const;
+  void step_through_current_loop(Axis& a, const Axis& seen, double e, double dt) const;
   void record_lit(Vec2 p0, Vec2 p1, bool lit);
   [[noreturn]] void fail(DeviceFault fault);
   void publish_status();

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "base/error.hpp"
 #include "marker/cli/number_keys.hpp"
 #include "marker/cli/option_values.hpp"
 #include "marker/limits/plant_limits.hpp"
@@ -44,6 +45,12 @@ const std::vector<PlantKey>& plant_keys() {
        "thermal limit: the drive trips (laser off, job failed) when an axis's rms acceleration over thermal_tau_s passes this % of its peak (0: none)"},
       {{"thermal_tau_s", &kPlantThermalTauRange}, [](Plant& p, double v) { p.thermal_tau_s = v; },
        [](const Plant& p) { return p.thermal_tau_s; }, "the coils' thermal time constant, s (the rms window)"},
+      {{"current_tau_us", &kPlantCurrentTauRange}, [](Plant& p, double v) { p.current_tau_us = v; },
+       [](const Plant& p) { return p.current_tau_us; },
+       "the amplifier's current loop lag: the acceleration follows the servo's demand this late; corners and jumps ring (0: none)"},
+      {{"jerk_max", &kPlantJerkRange}, [](Plant& p, double v) { p.jerk_max_mm_s3 = v; },
+       [](const Plant& p) { return p.jerk_max_mm_s3; },
+       "with current_tau_us: the current's slew (supply voltage over coil inductance) as a jerk limit, mm/s³ (0: none)"},
       {{"noise_um", &kPlantNoiseRange}, [](Plant& p, double v) { p.noise_um = v; },
        [](const Plant& p) { return p.noise_um; }, "beam position noise, rms per axis, correlated over the servo's τ"},
       {{"seed", &kPlantSeedRange, true}, [](Plant& p, double v) { p.seed = static_cast<std::uint64_t>(v); },
@@ -64,6 +71,8 @@ Plant parse_plant_option(const std::string& text) {
   for (const PlantKey& k : keys) names.push_back(k.key);
   for (const auto& [k, v] : parse_number_keys("--plant", text, names, "tau_scale=1.1,dead_us=10"))
     keys[k].set(p, v);
+  if (p.jerk_max_mm_s3 > 0 && p.current_tau_us == 0)
+    throw InputError("--plant jerk_max: the jerk limit is the current loop's slew; give current_tau_us too");
   return p;
 }
 

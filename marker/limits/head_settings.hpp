@@ -24,7 +24,7 @@ inline constexpr Quantity kLaserRise{
 inline constexpr Text kPlant{
     {"--plant", "",
      "the simulated head as it is, apart from the planner's model: KEY=VALUE,… (keys: tau_scale, wn_scale, "
-     "dead_us, latency_us, resonance_hz, resonance_zeta, accel_max, backemf_speed, rms_accel_pct, thermal_tau_s, noise_um, seed, quant_bits; docs/speed.md)"},
+     "dead_us, latency_us, resonance_hz, resonance_zeta, accel_max, backemf_speed, rms_accel_pct, thermal_tau_s, current_tau_us, jerk_max, noise_um, seed, quant_bits; docs/speed.md)"},
     {}, "the preset itself"};
 inline constexpr Quantity kSpot{
     {"--spot", "head.spot_diameter_um", "focused spot diameter (pulse overlap is measured against it)"},

@@ -6,6 +6,7 @@
 // with its seed.
 #include <gtest/gtest.h>
 
+#include "base/error.hpp"
 #include "driver/sim/quality_class.hpp"
 #include "driver/sim/sim_scanner.hpp"
 #include "fonts/catalog.hpp"
@@ -60,7 +61,8 @@ TEST(PlantMark, TheModelAsAPlantGivesTheModelsFigures) {
   EXPECT_EQ(classify(none.quality), QualityClass::high);
   EXPECT_GT(none.cps, 800);
   const Result model = mark_808(cli::parse_plant_option(
-      "tau_scale=1,wn_scale=1,dead_us=0,latency_us=0,resonance_hz=0,accel_max=0,noise_um=0,quant_bits=0"));
+      "tau_scale=1,wn_scale=1,dead_us=0,latency_us=0,resonance_hz=0,accel_max=0,current_tau_us=0,jerk_max=0,noise_um=0,"
+      "quant_bits=0"));
   EXPECT_EQ(model.quality.max_deviation_um, none.quality.max_deviation_um);
   EXPECT_EQ(model.quality.rms_deviation_um, none.quality.rms_deviation_um);
   EXPECT_EQ(model.quality.coverage, none.quality.coverage);
@@ -79,6 +81,20 @@ TEST(PlantMark, TheLagTwoPercentLongDropsThePenToGood) {
   const Result longer = mark_808(cli::parse_plant_option("tau_scale=1.02"));
   EXPECT_EQ(classify(longer.quality), QualityClass::good);  // 7.3 µm, dose ratio 1.34
   EXPECT_GT(longer.quality.max_deviation_um, 3);
+}
+
+// The amplifier's current loop: a velocity loop's lag (about 4·τi) the first-order inverse does
+// not know. 10 µs of it breaks the 808-cps pen at its corners; its jerk limit needs it.
+TEST(PlantMark, ACurrentLoopTheInverseDoesNotKnowBreaksThePen) {
+  const Result loop = mark_808(cli::parse_plant_option("current_tau_us=10"));
+  EXPECT_EQ(classify(loop.quality), QualityClass::poor);
+  EXPECT_GT(loop.quality.max_deviation_um, 100);  // in this build
+  try {
+    cli::parse_plant_option("jerk_max=1e12");
+    ADD_FAILURE() << "a jerk limit without its current loop was accepted";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "--plant jerk_max: the jerk limit is the current loop's slew; give current_tau_us too");
+  }
 }
 
 TEST(PlantMark, NoiseRepeatsWithItsSeed) {

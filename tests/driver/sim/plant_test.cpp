@@ -5,7 +5,8 @@
 // without lag; the acceleration limit caps the jump's acceleration; 16-bit quantisation lands a
 // held point on the field's code grid; noise has the rms asked for and repeats with its seed;
 // back-EMF takes the acceleration away as v(t) = V·(1 − e^{−a·t/V}), and the thermal limit trips
-// the drive when the rms acceleration passes it.
+// the drive when the rms acceleration passes it; the current loop keeps the ramp lag, overshoots a
+// step the model creeps up to and changes the acceleration no faster than its slew.
 #include "driver/sim/plant.hpp"
 
 #include <gtest/gtest.h>
@@ -210,6 +211,46 @@ TEST(Plant, BackEmfTakesTheAccelerationAwayAsTheSpeedRises) {
   EXPECT_NEAR(t_half, 4000 / 1e7 * std::log(2.0), 0.02 * 277.3e-6);
   EXPECT_NEAR(most_braking, -1e7, 1e4);
   EXPECT_NEAR(tr.p.back().x, 40, 1e-3);
+}
+
+TEST(Plant, CurrentLoopKeepsTheRampLagButOvershootsAStepAndHoldsItsSlew) {
+  Plant loop;
+  loop.current_tau_us = 20;
+  EXPECT_FALSE(loop.is_model());
+  // On a steady ramp the velocity loop has nothing left to correct: the lag is v·τ as the model's.
+  test::Stream ramp;
+  ramp.move({10, 0}, 1000, true);
+  const Trace with = run(head_sl10(), loop, ramp), without = run(head_sl10(), {}, ramp);
+  for (std::size_t i = 0; i < with.p.size(); ++i)
+    if (with.t[i] > 4e-3 && with.t[i] < 9e-3) {
+      ASSERT_NEAR(with.p[i].x, without.p[i].x, 1e-6) << with.t[i];
+    }
+  // A small step: the first-order model creeps up to it; through the current loop the mirror
+  // overshoots (the velocity loop's lag turns the servo into a damped higher-order loop).
+  const auto overshoot = [](const Trace& tr) {
+    double most = 0;
+    for (const Vec2& p : tr.p) most = std::max(most, p.x);
+    return most - 0.01;
+  };
+  test::Stream step(1e-6);
+  step.step_to({0.01, 0}, 3000);
+  EXPECT_LE(overshoot(run(head_sl10(), {}, step, 1e-6)), 1e-9);
+  EXPECT_GT(overshoot(run(head_sl10(), loop, step, 1e-6)), 0.01 * 0.001);
+  // A jump: the acceleration changes no faster than the slew allows; without it, faster.
+  const auto jerk = [](const Trace& tr) {
+    const std::vector<double> a = accelerations(tr);
+    double most = 0;
+    for (std::size_t i = 1; i < a.size(); ++i) most = std::max(most, std::abs(a[i] - a[i - 1]) / (tr.t[i + 2] - tr.t[i + 1]));
+    return most;
+  };
+  test::Stream jump(1e-6);
+  jump.step_to({5, 0}, 3000);
+  Plant slewed = loop;
+  slewed.jerk_max_mm_s3 = 1e12;
+  EXPECT_GT(jerk(run(head_sl10(), loop, jump, 1e-6)), 2e12);
+  EXPECT_LE(jerk(run(head_sl10(), slewed, jump, 1e-6)), 1e12 * 1.001);
+  const Trace slewed_jump = run(head_sl10(), slewed, jump, 1e-6);
+  EXPECT_NEAR(slewed_jump.p.back().x, 5, 1e-3);
 }
 
 TEST(Plant, ThermalLimitTripsTheDriveWhenTheRmsAccelerationPassesIt) {

@@ -180,7 +180,7 @@ MarkedPattern mark_on_board(const PatternArgs& a, const SimScannerOptions& sim, 
   const DeviceReport report = run_board_program(*board, program.header, program.commands, &interrupt_flag());
   if (report.outcome == DeviceState::aborted)
     throw Interrupted("marking the lag pattern on " + desc.name + " (" + std::to_string(report.commands_done) +
-                      " of " + std::to_string(program.commands.size()) + " commands done, laser off)");
+                      " of " + std::to_string(program.commands.size()) + " commands sent, laser off)");
   if (report.outcome != DeviceState::done)
     throw InputError("the lag pattern on " + desc.name + " failed: " +
                      (report.fault ? report.fault->message : std::string("the board ended the job")) +

@@ -48,6 +48,9 @@ DeviceReport run_board_program(CommandDevice& device, const JobHeader& header,
     } catch (const DeviceFaultError& e) {
       fault = e.fault();
       break;
+    } catch (...) {
+      watcher.stop_board();  // whatever went wrong, the board is not left running with the laser
+      throw;
     }
   }
   DeviceReport report = device.end_job();

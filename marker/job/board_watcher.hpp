@@ -43,8 +43,8 @@ class BoardStopWatcher {
 // A bare program on a command-level board, as one job: begin_job with `header`, the commands
 // submitted in chunks, end_job. A stop request aborts the board (laser off) and ends the
 // submission; the report says how far it got. The device must be idle (it stays in its final
-// state; the caller resets it). Device errors other than faults (a header the board refuses)
-// propagate before anything is sent.
+// state; the caller resets it). A header the board refuses propagates before anything is sent;
+// any other error while submitting aborts the board (laser off) and propagates.
 DeviceReport run_board_program(CommandDevice& device, const JobHeader& header,
                                std::span<const DeviceCommand> commands, const StopFlag* stop);
 

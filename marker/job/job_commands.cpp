@@ -46,6 +46,9 @@ void run_commands(const JobSpec& spec, const JobOptions& options, CommandDevice&
       watcher.stop_board();
       fault = e.fault();
       break;
+    } catch (...) {
+      watcher.stop_board();  // whatever went wrong, the board is not left running with the laser
+      throw;
     }
     if (chunk.empty()) break;
     if (watcher.stop_requested() || i >= abort_at) {
@@ -57,6 +60,9 @@ void run_commands(const JobSpec& spec, const JobOptions& options, CommandDevice&
     } catch (const DeviceFaultError& e) {
       fault = e.fault();
       break;
+    } catch (...) {
+      watcher.stop_board();
+      throw;
     }
     i += chunk.size();
   }

@@ -28,7 +28,11 @@ struct Case {
   LitPaths lit;
   DoseRaster dose;
   // mark_evenly leaves 1 s of full power per mm: the nominal of a pen at 100 % and 1 mm/s.
-  MarkIntent intent{1.0, {}};
+  MarkIntent intent = [] {
+    MarkIntent m;
+    m.nominal_dose_s_per_mm = 1.0;
+    return m;
+  }();
   Quality eval() const { return evaluate_quality(intended, lit, dose, intent); }
 };
 

@@ -18,7 +18,7 @@ constexpr const char* kDescriptors =
     "1201000200000040889599980001000000010902200001010080320904000002FF0000000705020200020007058802000200";
 
 std::string device_text(int bus, int dev, const std::string& syspath) {
-  char b[8], d[8];
+  char b[16], d[16];  // room for any int, so -Wformat-truncation holds at every -O
   std::snprintf(b, sizeof b, "%03d", bus);
   std::snprintf(d, sizeof d, "%03d", dev);
   return "P: " + syspath + "\n" +

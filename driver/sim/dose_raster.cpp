@@ -6,8 +6,11 @@
 
 namespace mark {
 
-DoseRaster::DoseRaster(double pixel_mm) : pixel_mm_(pixel_mm) {
+DoseRaster::DoseRaster(double pixel_mm, std::size_t dense_tiles)
+    : pixel_mm_(pixel_mm), dense_budget_(dense_tiles) {
   if (!(pixel_mm > 0)) throw std::invalid_argument("dose raster pixel must be positive");
+  // Four: a deposit touches up to four tiles, and none it just wrote may be packed under it.
+  if (dense_tiles < 4) throw std::invalid_argument("dose raster: at least 4 dense tiles");
 }
 
 std::uint64_t DoseRaster::key(std::int64_t tx, std::int64_t ty) {
@@ -15,11 +18,57 @@ std::uint64_t DoseRaster::key(std::int64_t tx, std::int64_t ty) {
          static_cast<std::uint32_t>(ty);
 }
 
-std::unique_ptr<DoseRaster::Tile> DoseRaster::new_tile() {
-  if (spare_.empty()) return std::make_unique<Tile>();
-  std::unique_ptr<Tile> t = std::move(spare_.back());
-  spare_.pop_back();
-  t->stale = true;
+void DoseRaster::give_floats(Tile& t, std::uint64_t k) {
+  // Over budget, the tile the beam left longest ago is packed first; its floats become this one's.
+  while (dense_count_ >= dense_budget_ && !lru_.empty()) {
+    const std::uint64_t old = lru_.back();
+    pack(old, *tiles_.at(old));
+  }
+  if (spare_.empty()) {
+    t.dose.assign(tile_size * tile_size, 0.0f);
+    t.stale = false;
+  } else {
+    t.dose = std::move(spare_.back());
+    spare_.pop_back();
+    t.stale = true;
+  }
+  lru_.push_front(k);
+  t.lru = lru_.begin();
+  ++dense_count_;
+}
+
+void DoseRaster::pack(std::uint64_t k, Tile& t) {
+  if (!t.stale) {
+    auto packed = std::make_unique<PackedTile>(t.dose);
+    if (!packed->values().empty()) {
+      packed_bytes_ += packed->bytes();
+      t.packed = std::move(packed);
+    }
+  }
+  if (spare_.size() < kSpareTiles) spare_.push_back(std::move(t.dose));
+  t.dose = {};
+  t.stale = false;
+  lru_.erase(t.lru);
+  --dense_count_;
+  if (cached_tile_ && cached_key_ == k) cached_tile_ = nullptr;
+}
+
+DoseRaster::Tile& DoseRaster::dense_tile(std::uint64_t k) {
+  auto& slot = tiles_[k];
+  if (!slot) slot = std::make_unique<Tile>();
+  Tile& t = *slot;
+  if (t.dense()) {
+    lru_.splice(lru_.begin(), lru_, t.lru);
+  } else {
+    give_floats(t, k);
+    if (t.packed) {
+      t.packed->unpack(t.dose);
+      t.stale = false;
+      packed_bytes_ -= t.packed->bytes();
+      t.packed.reset();
+    }
+  }
+  freshen(t);
   return t;
 }
 
@@ -31,10 +80,18 @@ void DoseRaster::freshen(Tile& t) {
 
 void DoseRaster::clear() {
   for (auto& [k, tile] : tiles_)
-    if (spare_.size() < kSpareTiles) spare_.push_back(std::move(tile));
+    if (tile->dense() && spare_.size() < kSpareTiles) spare_.push_back(std::move(tile->dose));
   tiles_.clear();
+  lru_.clear();
+  dense_count_ = 0;
+  packed_bytes_ = 0;
   total_ = 0;
   cached_tile_ = nullptr;
+}
+
+std::size_t DoseRaster::memory_bytes() const {
+  constexpr std::size_t floats = tile_size * tile_size * sizeof(float);
+  return (dense_count_ + spare_.size()) * floats + packed_bytes_ + tiles_.size() * sizeof(Tile);
 }
 
 float* DoseRaster::pixel_ref(std::int64_t ix, std::int64_t iy) {
@@ -42,21 +99,19 @@ float* DoseRaster::pixel_ref(std::int64_t ix, std::int64_t iy) {
   const std::uint64_t k = key(tx, ty);
   // The key of tile (−1, −1) is all ones, so the cache needs its own "empty" state.
   if (!cached_tile_ || k != cached_key_) {
-    auto& slot = tiles_[k];
-    if (!slot) slot = new_tile();
-    freshen(*slot);
+    cached_tile_ = &dense_tile(k);
     cached_key_ = k;
-    cached_tile_ = slot.get();
   }
   return &cached_tile_->dose[static_cast<std::size_t>(((iy & (tile_size - 1)) << tile_bits) |
                                                       (ix & (tile_size - 1)))];
 }
 
-const float* DoseRaster::find_pixel(std::int64_t ix, std::int64_t iy) const {
-  const auto it = tiles_.find(key(ix >> tile_bits, iy >> tile_bits));
-  if (it == tiles_.end() || it->second->stale) return nullptr;
-  return &it->second->dose[static_cast<std::size_t>(((iy & (tile_size - 1)) << tile_bits) |
-                                                    (ix & (tile_size - 1)))];
+const DoseRaster::Tile* DoseRaster::find_tile(std::uint64_t k) const {
+  const auto it = tiles_.find(k);
+  if (it == tiles_.end()) return nullptr;
+  const Tile& t = *it->second;
+  if (t.dense() ? t.stale : !t.packed) return nullptr;
+  return &t;
 }
 
 void DoseRaster::deposit(Vec2 p, double dose) {
@@ -80,12 +135,17 @@ void DoseRaster::deposit_segment(Vec2 a, Vec2 b, double dose) {
 
 void DoseRaster::add(const DoseRaster& other) {
   if (other.pixel_mm_ != pixel_mm_) throw std::invalid_argument("dose rasters of different pixel sizes cannot be added");
+  cached_tile_ = nullptr;
   for (const auto& [k, tile] : other.tiles_) {
-    if (tile->stale) continue;
-    auto& slot = tiles_[k];
-    if (!slot) slot = new_tile();
-    freshen(*slot);
-    for (std::size_t i = 0; i < slot->dose.size(); ++i) slot->dose[i] += tile->dose[i];
+    const Tile* from = other.find_tile(k);
+    if (!from) continue;
+    std::vector<float>& to = dense_tile(k).dose;
+    if (from->dense()) {
+      for (std::size_t i = 0; i < to.size(); ++i) to[i] += from->dose[i];
+    } else {
+      for (int r = 0; r < tile_size; ++r)
+        from->packed->for_each_in_row(r, 0, tile_size - 1, [&](int c, float v) { to[static_cast<std::size_t>(r * tile_size + c)] += v; });
+    }
   }
   total_ += other.total_;
 }
@@ -114,6 +174,12 @@ void DoseRaster::reserve_along(const std::vector<std::vector<Vec2>>& polylines, 
   // square goes to the map directly.
   const bool dense = w <= 4096 && h <= 4096;
   std::vector<unsigned char> wanted(dense ? static_cast<std::size_t>(w * h) : 0, 0);
+  // Within the budget every wanted tile gets its floats now; beyond it, only its place (the
+  // deposits will pack the tiles the beam has left), and the spares are filled to the budget.
+  std::vector<std::uint64_t> wanted_keys;
+  const auto want_tile = [&](std::int64_t tx, std::int64_t ty) {
+    if (!tiles_.contains(key(tx, ty))) wanted_keys.push_back(key(tx, ty));
+  };
   const auto want_square = [&](Vec2 p) {
     const std::int64_t ax = tile_of(p.x - reach) - tx0, bx = tile_of(p.x + reach) - tx0;
     const std::int64_t ay = tile_of(p.y - reach) - ty0, by = tile_of(p.y + reach) - ty0;
@@ -122,10 +188,7 @@ void DoseRaster::reserve_along(const std::vector<std::vector<Vec2>>& polylines, 
         std::fill_n(wanted.begin() + ty * w + ax, bx - ax + 1, 1);
         continue;
       }
-      for (std::int64_t tx = ax; tx <= bx; ++tx) {
-        auto& slot = tiles_[key(tx0 + tx, ty0 + ty)];
-        if (!slot) slot = new_tile();
-      }
+      for (std::int64_t tx = ax; tx <= bx; ++tx) want_tile(tx0 + tx, ty0 + ty);
     }
   };
   for (const auto& line : polylines)
@@ -137,16 +200,25 @@ void DoseRaster::reserve_along(const std::vector<std::vector<Vec2>>& polylines, 
     }
   for (std::int64_t ty = 0; dense && ty < h; ++ty)
     for (std::int64_t tx = 0; tx < w; ++tx)
-      if (wanted[static_cast<std::size_t>(ty * w + tx)]) {
-        auto& slot = tiles_[key(tx0 + tx, ty0 + ty)];
-        if (!slot) slot = new_tile();
-      }
+      if (wanted[static_cast<std::size_t>(ty * w + tx)]) want_tile(tx0 + tx, ty0 + ty);
+  std::sort(wanted_keys.begin(), wanted_keys.end());  // the sparse path may name a tile twice
+  wanted_keys.erase(std::unique(wanted_keys.begin(), wanted_keys.end()), wanted_keys.end());
+  const bool fits = dense_count_ + wanted_keys.size() <= dense_budget_;
+  for (const std::uint64_t k : wanted_keys) {
+    auto& slot = tiles_[k];
+    slot = std::make_unique<Tile>();
+    if (fits) give_floats(*slot, k);
+  }
+  const std::size_t room = std::min(dense_budget_ - std::min(dense_count_, dense_budget_), kSpareTiles);
+  while (!fits && spare_.size() < room) spare_.emplace_back(tile_size * tile_size, 0.0f);
   cached_tile_ = nullptr;
 }
 
 double DoseRaster::pixel(std::int64_t ix, std::int64_t iy) const {
-  const float* p = find_pixel(ix, iy);
-  return p ? *p : 0.0;
+  const Tile* t = find_tile(key(ix >> tile_bits, iy >> tile_bits));
+  if (!t) return 0.0;
+  const int col = static_cast<int>(ix & (tile_size - 1)), row = static_cast<int>(iy & (tile_size - 1));
+  return t->dense() ? t->dose[static_cast<std::size_t>((row << tile_bits) | col)] : t->packed->value(col, row);
 }
 
 double DoseRaster::sum_disc(Vec2 p, double radius_mm) const {
@@ -174,20 +246,25 @@ double DoseRaster::sum_disc(Vec2 p, double radius_mm) const {
       const std::int64_t run_end = std::min(ix1, (ix | (tile_size - 1)));
       const std::uint64_t k = key(ix >> tile_bits, iy >> tile_bits);
       if (!looked_up || k != last_key) {
-        const auto it = tiles_.find(k);
-        last_tile = it == tiles_.end() || it->second->stale ? nullptr : it->second.get();
+        last_tile = find_tile(k);
         last_key = k;
         looked_up = true;
       }
-      if (last_tile) {
+      // Inside r − ½ the weight is 1; only the one-pixel rim needs the square root.
+      const auto weighted = [&](std::int64_t x, double v) {
+        const double dx = static_cast<double>(x) - cx;
+        const double d2 = dx * dx + dy * dy;
+        return d2 <= inner2 ? v : std::clamp(reach - std::sqrt(d2), 0.0, 1.0) * v;
+      };
+      if (last_tile && last_tile->dense()) {
         const float* row = &last_tile->dose[static_cast<std::size_t>(
             ((iy & (tile_size - 1)) << tile_bits) | (ix & (tile_size - 1)))];
-        for (std::int64_t k = 0; k <= run_end - ix; ++k) {
-          const double dx = static_cast<double>(ix + k) - cx;
-          const double d2 = dx * dx + dy * dy;
-          // Inside r − ½ the weight is 1; only the one-pixel rim needs the square root.
-          sum += d2 <= inner2 ? row[k] : std::clamp(reach - std::sqrt(d2), 0.0, 1.0) * row[k];
-        }
+        for (std::int64_t k = 0; k <= run_end - ix; ++k) sum += weighted(ix + k, row[k]);
+      } else if (last_tile) {
+        const std::int64_t base = ix & ~std::int64_t{tile_size - 1};
+        last_tile->packed->for_each_in_row(static_cast<int>(iy & (tile_size - 1)), static_cast<int>(ix - base),
+                                           static_cast<int>(run_end - base),
+                                           [&](int c, float v) { sum += weighted(base + c, v); });
       }
       ix = run_end + 1;
     }
@@ -213,9 +290,10 @@ bool DoseRaster::bounds(std::int64_t& ix0, std::int64_t& iy0, std::int64_t& ix1,
 
 double DoseRaster::max_pixel() const {
   float m = 0;
-  for (const auto& [k, tile] : tiles_)
-    if (!tile->stale)
-      for (float d : tile->dose) m = std::max(m, d);
+  for (const auto& [k, tile] : tiles_) {
+    if (!find_tile(k)) continue;
+    for (float d : tile->dense() ? tile->dose : tile->packed->values()) m = std::max(m, d);
+  }
   return m;
 }
 
@@ -228,13 +306,21 @@ bool DoseRaster::copy_rect(std::int64_t ix0, std::int64_t iy0, std::int64_t w, s
       const auto it = tiles_.find(key(tx, ty));
       if (it == tiles_.end()) continue;
       any = true;
-      if (it->second->stale) continue;  // zeros
+      const Tile* t = find_tile(key(tx, ty));
+      if (!t) continue;  // zeros
       const std::int64_t x0 = std::max(ix0, tx * tile_size), x1 = std::min(ix0 + w, (tx + 1) * tile_size);
       const std::int64_t y0 = std::max(iy0, ty * tile_size), y1 = std::min(iy0 + h, (ty + 1) * tile_size);
       for (std::int64_t y = y0; y < y1; ++y) {
-        const float* src = &it->second->dose[static_cast<std::size_t>(((y - ty * tile_size) << tile_bits) +
-                                                                     (x0 - tx * tile_size))];
-        std::copy(src, src + (x1 - x0), out + (y - iy0) * w + (x0 - ix0));
+        float* to = out + (y - iy0) * w;
+        const int row = static_cast<int>(y - ty * tile_size);
+        if (t->dense()) {
+          const float* src = &t->dose[static_cast<std::size_t>((row << tile_bits) + (x0 - tx * tile_size))];
+          std::copy(src, src + (x1 - x0), to + (x0 - ix0));
+        } else {
+          t->packed->for_each_in_row(row, static_cast<int>(x0 - tx * tile_size),
+                                     static_cast<int>(x1 - 1 - tx * tile_size),
+                                     [&](int c, float v) { to[tx * tile_size + c - ix0] = v; });
+        }
       }
     }
   return any;

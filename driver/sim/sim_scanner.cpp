@@ -161,6 +161,7 @@ DeviceReport SimScanner::end_job() {
   r.figures = {{"samples", static_cast<double>(samples_)},
                {"device_time_s", device_time_s()},
                {"dose_tiles", static_cast<double>(dose_.tiles())},
+               {"dose_memory_mib", static_cast<double>(dose_.memory_bytes()) / (1 << 20)},
                {"power_pct", laser_.power_pct},
                {"frequency_khz", laser_.frequency_khz},
                {"pulses", static_cast<double>(p.pulses)},

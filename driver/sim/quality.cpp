@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 
 #include "driver/sim/segment_grid.hpp"
@@ -22,13 +24,13 @@ struct Stroke {
   bool closed;
 };
 
-// A point every ≤ step along the intended strokes (midpoints of equal pieces), its share of the
-// stroke length, and the dose an ideal constant-speed mark leaves in the window around it.
+// A point every ≤ step along the intended strokes (midpoints of equal pieces of each segment),
+// its share of the stroke length, and its stroke. Not stored: a long text has millions (a point
+// every 2 µm of its strokes), and each is computed again from its segment when it is read.
 struct StrokeSample {
   Vec2 p;
   double weight;
   std::uint32_t stroke;
-  double ideal_dose = 0;
 };
 
 double median(std::vector<double> v) {
@@ -43,46 +45,64 @@ double median(std::vector<double> v) {
 struct QualityReference::Data {
   QualityOptions options;
   double pixel_mm;
-  std::vector<Segment> segments;
+  std::shared_ptr<const std::vector<Segment>> shared_segments;  // with the grids
+  std::span<const Segment> segments;                            // *shared_segments
   std::vector<Stroke> strokes;
   std::vector<std::uint32_t> stroke_of_segment;
-  std::vector<StrokeSample> samples;
-  SegmentGrid fine{{}, fine_cell_mm};
-  SegmentGrid coarse{{}, coarse_cell_mm};
+  // Index of each segment's first sample (one entry more than segments: the count at the end),
+  // and the dose an ideal constant-speed mark leaves in the window around each sample.
+  std::vector<std::size_t> first_sample;
+  std::vector<double> ideal_dose;
+
+  std::size_t sample_count() const { return first_sample.empty() ? 0 : first_sample.back(); }
+  static int pieces_of(const Segment& seg, double step) {
+    return std::max(1, static_cast<int>(std::ceil(norm(seg.b - seg.a) / step)));
+  }
+  // f(index, sample) for every sample of segment j, in order.
+  template <class F>
+  void for_each_sample_of(std::size_t j, F&& f) const {
+    const Segment& seg = segments[j];
+    const double len = norm(seg.b - seg.a);
+    const int pieces = pieces_of(seg, options.sample_step_mm);
+    for (int k = 0; k < pieces; ++k)
+      f(first_sample[j] + static_cast<std::size_t>(k),
+        StrokeSample{seg.a + ((k + 0.5) / pieces) * (seg.b - seg.a), len / pieces, stroke_of_segment[j]});
+  }
+  template <class F>
+  void for_each_sample(F&& f) const {
+    for (std::size_t j = 0; j < segments.size(); ++j) for_each_sample_of(j, f);
+  }
+  SegmentGrid fine{std::vector<Segment>{}, fine_cell_mm};
+  SegmentGrid coarse{std::vector<Segment>{}, coarse_cell_mm};
 
   void collect(const std::vector<std::vector<Vec2>>& polylines) {
-    const double step = options.sample_step_mm;
-    // Sized once: growing by doubling held up to 1.5 copies of the samples at the last growth,
-    // the largest of the reference's arrays on a long text.
-    std::size_t n_segments = 0, n_samples = 0;
-    for (const auto& line : polylines) {
-      if (line.empty()) continue;
-      n_segments += std::max<std::size_t>(line.size(), 2) - 1;
-      for (std::size_t i = 1; i < line.size(); ++i)
-        n_samples += static_cast<std::size_t>(std::max(1, static_cast<int>(std::ceil(norm(line[i] - line[i - 1]) / step))));
-      if (line.size() == 1) ++n_samples;
-    }
-    segments.reserve(n_segments);
+    // Sized once: growing by doubling held up to 1.5 copies at the last growth.
+    std::size_t n_segments = 0;
+    for (const auto& line : polylines)
+      if (!line.empty()) n_segments += std::max<std::size_t>(line.size(), 2) - 1;
+    std::vector<Segment> built;
+    built.reserve(n_segments);
     stroke_of_segment.reserve(n_segments);
-    samples.reserve(n_samples);
+    first_sample.reserve(n_segments + 1);
+    first_sample.push_back(0);
     for (const auto& line : polylines) {
       if (line.empty()) continue;
-      const auto first = static_cast<std::uint32_t>(segments.size());
+      const auto first = static_cast<std::uint32_t>(built.size());
       const auto stroke = static_cast<std::uint32_t>(strokes.size());
       // A single point is a dot: one zero-length segment.
       const std::size_t n = std::max<std::size_t>(line.size(), 2);
       for (std::size_t i = 1; i < n; ++i) {
         const Vec2 a = line[std::min(i - 1, line.size() - 1)], b = line[std::min(i, line.size() - 1)];
-        segments.push_back({a, b});
+        built.push_back({a, b});
         stroke_of_segment.push_back(stroke);
-        const double len = norm(b - a);
-        const int pieces = std::max(1, static_cast<int>(std::ceil(len / step)));
-        for (int k = 0; k < pieces; ++k)
-          samples.push_back({a + ((k + 0.5) / pieces) * (b - a), len / pieces, stroke});
+        first_sample.push_back(first_sample.back() + static_cast<std::size_t>(pieces_of(built.back(), options.sample_step_mm)));
       }
       const bool closed = line.size() > 2 && norm(line.front() - line.back()) < 1e-9;
-      strokes.push_back({first, static_cast<std::uint32_t>(segments.size() - 1), closed});
+      strokes.push_back({first, static_cast<std::uint32_t>(built.size() - 1), closed});
     }
+    ideal_dose.assign(sample_count(), 0.0);
+    shared_segments = std::make_shared<const std::vector<Segment>>(std::move(built));
+    segments = *shared_segments;
   }
 
   // The ideal dose is laid down and read a band of kIdealBand_mm at a time, each band's raster
@@ -91,29 +111,42 @@ struct QualityReference::Data {
   // order as a raster of the whole job would, so the figures are the same to the bit, and memory
   // is one band's instead of a second raster as large as the simulator's.
   void prepare_ideal_dose() {
-    if (samples.empty()) return;
+    if (segments.empty()) return;
     constexpr double kIdealBand_mm = 2;
     const double reach = options.dose_window_mm + 3 * pixel_mm;
     double y0 = std::numeric_limits<double>::infinity(), y1 = -y0;
-    for (const StrokeSample& s : samples) y0 = std::min(y0, s.p.y), y1 = std::max(y1, s.p.y);
+    for_each_sample([&](std::size_t, const StrokeSample& s) { y0 = std::min(y0, s.p.y), y1 = std::max(y1, s.p.y); });
     const auto band_of = [&](double y) {
       return static_cast<std::size_t>(std::clamp(std::floor((y - y0) / kIdealBand_mm), 0.0, std::floor((y1 - y0) / kIdealBand_mm)));
     };
     const std::size_t bands = band_of(y1) + 1;
-    std::vector<std::vector<std::uint32_t>> band_samples(bands), band_segments(bands);
-    for (std::size_t i = 0; i < samples.size(); ++i) band_samples[band_of(samples[i].p.y)].push_back(static_cast<std::uint32_t>(i));
+    // Per band: the segments with a sample in it (each sample is read in its own band only),
+    // and the segments whose dose reaches it.
+    std::vector<std::vector<std::uint32_t>> band_sampled(bands), band_segments(bands);
     for (std::size_t j = 0; j < segments.size(); ++j) {
+      std::size_t last = bands;
+      for_each_sample_of(j, [&](std::size_t, const StrokeSample& s) {
+        if (const std::size_t b = band_of(s.p.y); b != last) {
+          if (band_sampled[b].empty() || band_sampled[b].back() != j) band_sampled[b].push_back(static_cast<std::uint32_t>(j));
+          last = b;
+        }
+      });
       const Segment& seg = segments[j];
       const double lo = std::min(seg.a.y, seg.b.y) - reach, hi = std::max(seg.a.y, seg.b.y) + reach;
       if (hi < y0 || lo > y1) continue;
       for (std::size_t b = band_of(lo); b <= band_of(hi); ++b) band_segments[b].push_back(static_cast<std::uint32_t>(j));
     }
     for (std::size_t b = 0; b < bands; ++b) {
-      if (band_samples[b].empty()) continue;
+      if (band_sampled[b].empty()) continue;
       DoseRaster ideal(pixel_mm);
       for (const std::uint32_t j : band_segments[b])
         ideal.deposit_segment(segments[j].a, segments[j].b, std::max(norm(segments[j].b - segments[j].a), 1e-9));
-      for (const std::uint32_t i : band_samples[b]) samples[i].ideal_dose = ideal.sum_disc(samples[i].p, options.dose_window_mm);
+      for (const std::uint32_t j : band_sampled[b])
+        for_each_sample_of(j, [&](std::size_t i, const StrokeSample& s) {
+          if (band_of(s.p.y) == b) ideal_dose[i] = ideal.sum_disc(s.p, options.dose_window_mm);
+        });
+      std::vector<std::uint32_t>().swap(band_segments[b]);  // a band's lists are not needed again
+      std::vector<std::uint32_t>().swap(band_sampled[b]);
     }
   }
 
@@ -161,8 +194,8 @@ QualityReference::QualityReference(const std::vector<std::vector<Vec2>>& intende
   d.options = options;
   d.pixel_mm = pixel_mm;
   d.collect(intended_polylines);
-  d.fine = SegmentGrid(d.segments, fine_cell_mm);
-  d.coarse = SegmentGrid(d.segments, coarse_cell_mm);
+  d.fine = SegmentGrid(d.shared_segments, fine_cell_mm);
+  d.coarse = SegmentGrid(d.shared_segments, coarse_cell_mm);
   d.prepare_ideal_dose();
 }
 
@@ -175,7 +208,7 @@ Quality QualityReference::evaluate(const LitPaths& lit, const DoseRaster& dose, 
   if (std::abs(dose.pixel_mm() - d.pixel_mm) > 1e-12)
     throw std::invalid_argument("quality: dose raster pixel differs from the reference's");
   Quality q;
-  if (d.samples.empty()) return q;
+  if (d.sample_count() == 0) return q;
 
   // Deviation and overshoot of every lit position, measured against the stroke its lit run
   // marks: a beam that cuts across to a neighbouring stroke is off its own stroke, however close
@@ -211,30 +244,29 @@ Quality QualityReference::evaluate(const LitPaths& lit, const DoseRaster& dose, 
   const double radius = d.options.coverage_radius_mm;
   const SegmentGrid lit_grid(std::move(lit_segments), std::max(radius, fine_cell_mm));
   double covered = 0, total = 0;
-  for (const StrokeSample& s : d.samples) {
+  d.for_each_sample([&](std::size_t, const StrokeSample& s) {
     total += s.weight;
     if (lit_grid.any_within(s.p, radius)) covered += s.weight;
-  }
+  });
   q.coverage = total > 0 ? covered / total : 0;
 
   // Dose along the strokes relative to the ideal constant-speed mark of the same strokes. The
   // ideal leaves 1 s of full power per mm, so each ratio is also the energy per mm there.
   std::vector<double> ratio, stroke_ratio;
-  ratio.reserve(d.samples.size());
+  ratio.reserve(d.sample_count());
   double least_stroke = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < d.samples.size();) {
-    // The samples of one stroke are consecutive: its median is its energy per mm.
+  for (const Stroke& stroke : d.strokes) {
+    // A stroke's median is its energy per mm.
     stroke_ratio.clear();
     double length = 0;
-    const std::uint32_t stroke = d.samples[i].stroke;
-    for (; i < d.samples.size() && d.samples[i].stroke == stroke; ++i) {
-      const StrokeSample& s = d.samples[i];
-      length += s.weight;
-      if (s.ideal_dose <= 0) continue;
-      const double r = dose.sum_disc(s.p, d.options.dose_window_mm) / s.ideal_dose;
-      ratio.push_back(r);
-      stroke_ratio.push_back(r);
-    }
+    for (std::size_t j = stroke.first_segment; j <= stroke.last_segment; ++j)
+      d.for_each_sample_of(j, [&](std::size_t i, const StrokeSample& s) {
+        length += s.weight;
+        if (d.ideal_dose[i] <= 0) return;
+        const double r = dose.sum_disc(s.p, d.options.dose_window_mm) / d.ideal_dose[i];
+        ratio.push_back(r);
+        stroke_ratio.push_back(r);
+      });
     if (length > 0 && !stroke_ratio.empty()) least_stroke = std::min(least_stroke, median(stroke_ratio));
   }
   const double mid = median(ratio);

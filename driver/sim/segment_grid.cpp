@@ -25,7 +25,10 @@ double point_segment_distance(Vec2 p, Vec2 a, Vec2 b, double* t_out) {
 }
 
 SegmentGrid::SegmentGrid(std::vector<Segment> segments, double cell_mm)
-    : segments_(std::move(segments)), cell_mm_(cell_mm) {
+    : SegmentGrid(std::make_shared<const std::vector<Segment>>(std::move(segments)), cell_mm) {}
+
+SegmentGrid::SegmentGrid(std::shared_ptr<const std::vector<Segment>> segments, double cell_mm)
+    : owner_(std::move(segments)), segments_(*owner_), cell_mm_(cell_mm) {
   if (!(cell_mm > 0)) throw std::invalid_argument("segment grid cell must be positive");
   if (segments_.empty()) return;
   Vec2 lo = segments_[0].a, hi = lo;

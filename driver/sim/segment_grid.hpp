@@ -6,6 +6,8 @@
 // bounds would need more than max_cells cells.
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <span>
 #include <vector>
 
 #include "driver/vec2.hpp"
@@ -26,6 +28,9 @@ class SegmentGrid {
   static constexpr std::size_t max_cells = std::size_t{1} << 22;
 
   SegmentGrid(std::vector<Segment> segments, double cell_mm);
+  // Grids of several cell sizes over the same segments share them (a long text's intended
+  // strokes are millions of segments).
+  SegmentGrid(std::shared_ptr<const std::vector<Segment>> segments, double cell_mm);
   std::size_t size() const { return segments_.size(); }
   const Segment& segment(std::uint32_t i) const { return segments_[i]; }
   double cell_mm() const { return cell_mm_; }
@@ -49,7 +54,8 @@ class SegmentGrid {
   void scan_cell(std::int64_t x, std::int64_t y, const Query& q, Nearest& best,
                  double& best_d2) const;
 
-  std::vector<Segment> segments_;
+  std::shared_ptr<const std::vector<Segment>> owner_;
+  std::span<const Segment> segments_;  // *owner_, which a move or copy of the grid leaves in place
   double cell_mm_;
   Vec2 origin_{0, 0};
   std::int64_t nx_ = 0, ny_ = 0;

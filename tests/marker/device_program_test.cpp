@@ -237,6 +237,17 @@ TEST(DeviceProgram, TransportFaultIsReportedWithWhatWasMarked) {
   EXPECT_DOUBLE_EQ(r.ink_marked, ink_fraction(p, 25));
 }
 
+// An error that is not a device fault (a bug, memory) escapes the job, but only after the board
+// was told to stop: it is not left running the commands it already has, laser and all.
+TEST(DeviceProgram, AnErrorThatIsNotAFaultStopsTheBoardBeforeItEscapes) {
+  RecordingCommandDevice dev;
+  dev.error_at = 25;
+  EXPECT_THROW(run_job(board_job(), JobOptions{}, dev), std::runtime_error);
+  EXPECT_EQ(dev.received.size(), 25u);
+  EXPECT_GE(dev.aborts.load(), 1);
+  EXPECT_EQ(dev.status().state, DeviceState::aborted);
+}
+
 // Rows of the 62 characters at 1 mm: ten of them are a plan of thousands of commands, above
 // the stream's threshold.
 JobSpec rows_job(int rows) {

@@ -3,6 +3,7 @@
 // honours abort() (the rest is not executed) and can fail at a given command.
 #include <atomic>
 #include <mutex>
+#include <stdexcept>
 #include <vector>
 
 #include "driver/device.hpp"
@@ -15,6 +16,7 @@ class RecordingCommandDevice : public CommandDevice {
   std::vector<DeviceCommand> received;
   std::vector<JobHeader> headers;
   long fail_at = -1;  // throw a transport fault when this command index arrives
+  long error_at = -1;  // throw an error that is not a device fault (a bug, bad_alloc) there
 
   RecordingCommandDevice() {
     description.name = "recording board";
@@ -36,6 +38,8 @@ class RecordingCommandDevice : public CommandDevice {
         fault_ = DeviceFault{FaultCategory::transport, "recording board: unplugged", received.size()};
         throw DeviceFaultError(*fault_);
       }
+      if (error_at >= 0 && static_cast<long>(received.size()) == error_at)
+        throw std::runtime_error("recording board: not a fault");
       received.push_back(c);
     }
   }

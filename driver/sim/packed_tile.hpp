@@ -16,7 +16,6 @@ class PackedTile {
  public:
   static constexpr int kSide = 64;  // pixels per row; one mask word per row
 
-  PackedTile() { mask_.fill(0), row_start_.fill(0); }
   // From a dense row-major tile of kSide × kSide values.
   explicit PackedTile(std::span<const float> dense) {
     values_.reserve(count_nonzero(dense));

@@ -203,7 +203,7 @@ class EmulatedBoard : private ListFeed {
   std::size_t packets_seen_ = 0;  // packet transfers the host attempted
   std::size_t packets_lost_ = 0;
   double withhold_until_s_ = -1;
-  bool stalled_ = false, unplugged_ = false, unplug_notified_ = false;
+  bool stalled_ = false, unplugged_ = false;
   std::size_t single_fault_seen_ = 0;  // occurrences of faults_.single->opcode
   bool drop_next_reply_ = false;
   double hang_until_s_ = -1;      // < 0: not hanging; +inf: for good

@@ -9,7 +9,6 @@ namespace mark {
 namespace {
 
 constexpr double kMinLength_mm = 1e-9;  // as the constant-speed generator: shorter is a point
-constexpr double kTimeEps = 1e-12;      // s: a sample exactly on a command's end belongs to it
 
 SpeedProfile profile_of(const Command& c) {
   if (c.planned())

@@ -33,11 +33,42 @@ struct StrokeSample {
   std::uint32_t stroke;
 };
 
-double median(std::vector<double> v) {
+// A value read at a sample, and the stroke length that sample stands for.
+struct Weighted {
+  double value;
+  double weight;
+};
+
+// The median along the strokes' length: the smallest value with at least half the total weight at
+// or below it. Weighted by length, not counted by point, so a caller that cuts a curve finer than
+// the line beside it does not tip it. Equal weights when the total is 0 (only dots). Expected
+// linear time: nth_element halves the range that still holds the median.
+double length_median(std::vector<Weighted> v) {
   if (v.empty()) return 0;
-  auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
+  double total = 0;
+  for (const Weighted& w : v) total += w.weight;
+  if (!(total > 0)) {
+    for (Weighted& w : v) w.weight = 1;
+    total = static_cast<double>(v.size());
+  }
+  const auto by_value = [](const Weighted& a, const Weighted& b) { return a.value < b.value; };
+  double need = 0.5 * total;  // weight still to pass within [lo, hi)
+  auto lo = v.begin(), hi = v.end();
+  while (hi - lo > 1) {
+    const auto mid = lo + (hi - lo) / 2;
+    std::nth_element(lo, mid, hi, by_value);
+    double below = 0;
+    for (auto it = lo; it != mid; ++it) below += it->weight;
+    if (below >= need) {
+      hi = mid;
+    } else if (below + mid->weight >= need) {
+      return mid->value;
+    } else {
+      need -= below + mid->weight;
+      lo = mid + 1;
+    }
+  }
+  return lo->value;
 }
 
 }  // namespace
@@ -252,7 +283,7 @@ Quality QualityReference::evaluate(const LitPaths& lit, const DoseRaster& dose, 
 
   // Dose along the strokes relative to the ideal constant-speed mark of the same strokes. The
   // ideal leaves 1 s of full power per mm, so each ratio is also the energy per mm there.
-  std::vector<double> ratio, stroke_ratio;
+  std::vector<Weighted> ratio, stroke_ratio;
   ratio.reserve(d.sample_count());
   double least_stroke = std::numeric_limits<double>::infinity();
   for (const Stroke& stroke : d.strokes) {
@@ -264,13 +295,14 @@ Quality QualityReference::evaluate(const LitPaths& lit, const DoseRaster& dose, 
         length += s.weight;
         if (d.ideal_dose[i] <= 0) return;
         const double r = dose.sum_disc(s.p, d.options.dose_window_mm) / d.ideal_dose[i];
-        ratio.push_back(r);
-        stroke_ratio.push_back(r);
+        ratio.push_back({r, s.weight});
+        stroke_ratio.push_back({r, s.weight});
       });
-    if (length > 0 && !stroke_ratio.empty()) least_stroke = std::min(least_stroke, median(stroke_ratio));
+    if (length > 0 && !stroke_ratio.empty()) least_stroke = std::min(least_stroke, length_median(stroke_ratio));
   }
-  const double mid = median(ratio);
-  const double top = ratio.empty() ? 0 : *std::max_element(ratio.begin(), ratio.end());
+  double top = 0;
+  for (const Weighted& w : ratio) top = std::max(top, w.value);
+  const double mid = length_median(std::move(ratio));
   q.dose_ratio_max = mid > 0 ? top / mid : (top > 0 ? no_median_ratio : 0);
   const auto share_of = [&](double reference_s_per_mm) {
     if (std::isinf(least_stroke)) return 1.0;  // only dwell dots: nothing has a per-mm figure

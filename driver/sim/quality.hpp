@@ -1,7 +1,9 @@
 #pragma once
 // Quality figures of a simulated mark against what was intended. The intended strokes come as
-// polylines densely sampled by the caller (≤ 5 µm apart, one per lit stroke; a polyline whose
-// last point equals its first is closed and has no ends). Spatial grids make every query local,
+// polylines, one per lit stroke (a polyline whose last point equals its first is closed and has
+// no ends); the reference samples every segment at its own step and weighs each sample by the
+// length it stands for, so a line may come whole and a curve in short pieces (no coarser than
+// the deviation the figures should see). Spatial grids make every query local,
 // and a QualityReference prepares everything that depends only on the intended strokes once,
 // so a speed search can evaluate many marks of the same strokes cheaply.
 #include <cstddef>

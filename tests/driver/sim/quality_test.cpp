@@ -72,6 +72,29 @@ TEST(Quality, DosePerMmIsTheLeastDosedStrokesShareOfTheNominal) {
   EXPECT_DOUBLE_EQ(q.spot_diameter_um, 0);
 }
 
+// The medians are taken along the stroke's length, not over its points: a caller that cuts part
+// of a stroke finer (a curve in 1 µm pieces beside a line left whole) does not tip them. 40 % of
+// the stroke at the nominal, 60 % at twice it: the stroke's median is twice the nominal however
+// the 40 % is cut (by count of points it would be the nominal once that part has most of them).
+TEST(Quality, MediansAreAlongTheLengthNotOverThePointsGiven) {
+  const auto figures = [](double first_step) {
+    Case c;
+    std::vector<Vec2> line = dense({0, 0}, {0.8, 0}, first_step);
+    const std::vector<Vec2> rest = dense({0.8, 0}, {2, 0}, 0.005);
+    line.insert(line.end(), rest.begin() + 1, rest.end());
+    c.intended = {line};
+    c.lit.runs.push_back(line);
+    mark_evenly(c.dose, dense({0, 0}, {0.8, 0}), 1.0);
+    mark_evenly(c.dose, dense({0.8, 0}, {2, 0}), 2.0);
+    return c.eval();
+  };
+  const Quality even = figures(0.005), fine = figures(0.001);
+  EXPECT_NEAR(even.dose_per_mm_fraction, 2.0, 0.05);
+  EXPECT_NEAR(fine.dose_per_mm_fraction, even.dose_per_mm_fraction, 0.01 * even.dose_per_mm_fraction);
+  EXPECT_NEAR(fine.dose_ratio_max, even.dose_ratio_max, 0.01 * even.dose_ratio_max);
+  EXPECT_NEAR(fine.coverage, even.coverage, 1e-9);
+}
+
 TEST(Quality, WorseOfTakesEachFiguresWorse) {
   Quality a, b;
   a.max_deviation_um = 3, b.max_deviation_um = 7;

@@ -12,7 +12,10 @@ std::vector<std::vector<Vec2>> intended_polylines(const Figure& figure, double s
     const Point p0 = s.start();
     line.push_back({p0.x(), p0.y()});
     for (const Element& e : s.elements)
-      for_each_piece_end(e, spaced_count(e, step_mm), [&](double x, double y) { line.push_back({x, y}); });
+      // A straight element is one segment: cutting it adds points, not accuracy (the quality
+      // reference samples every segment at its own step).
+      for_each_piece_end(e, std::holds_alternative<Line>(e.geometry()) ? 1 : spaced_count(e, std::max(step_mm, 0.005)),
+                         [&](double x, double y) { line.push_back({x, y}); });
     if (s.closed()) line.back() = line.front();  // exactly, so the quality figures see it closed
     out.push_back(std::move(line));
   }

@@ -142,6 +142,17 @@ TEST(PlannedLocus, FeedForwardLeadsByLagTimesVelocity) {
   EXPECT_NEAR(with[mid].y_mm - without[mid].y_mm, 0, 1e-6);
 }
 
+// Points every ≤ step along a polyline (its segments cut into equal pieces), whatever its own
+// point spacing: the intended strokes keep straight elements whole.
+std::vector<Vec2> points_along(const std::vector<Vec2>& line, double step) {
+  std::vector<Vec2> out{line.front()};
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    const int n = std::max(1, static_cast<int>(std::ceil(norm(line[i] - line[i - 1]) / step)));
+    for (int k = 1; k <= n; ++k) out.push_back(line[i - 1] + (static_cast<double>(k) / n) * (line[i] - line[i - 1]));
+  }
+  return out;
+}
+
 // Constant dose per mm along one stroke whose speed changes: 2 mm of line at up to 2000 mm/s,
 // a quarter circle of 0.1 mm radius the curvature limit slows to ~1050 mm/s, 2 mm more line.
 TEST(PlannedLocus, DosePerMmStaysConstantWhereTheSpeedChanges) {
@@ -156,8 +167,7 @@ TEST(PlannedLocus, DosePerMmStaysConstantWhereTheSpeedChanges) {
       ideal.deposit_segment(intended[0][i - 1], intended[0][i], norm(intended[0][i] - intended[0][i - 1]));
     std::vector<double> r;
     // Away from the stroke's ends (where the ideal has its own end effect), every 5 µm.
-    for (std::size_t i = 0; i < intended[0].size(); ++i) {
-      const Vec2 p = intended[0][i];
+    for (const Vec2& p : points_along(intended[0], 0.005)) {
       if (norm(p - intended[0].front()) < 0.05 || norm(p - intended[0].back()) < 0.05) continue;
       r.push_back(m.sim->dose().sum_disc(p, 0.015) / ideal.sum_disc(p, 0.015));
     }
@@ -188,7 +198,7 @@ TEST(PlannedLocus, DosePerMmStaysConstantWhereTheSpeedChanges) {
     for (std::size_t i = 1; i < intended[0].size(); ++i)
       ideal.deposit_segment(intended[0][i - 1], intended[0][i], norm(intended[0][i] - intended[0][i - 1]));
     double a = 1e9, b = 0;
-    for (const Vec2& q : intended[0]) {
+    for (const Vec2& q : points_along(intended[0], 0.005)) {
       if (norm(q - intended[0].front()) < 0.05 || norm(q - intended[0].back()) < 0.05) continue;
       const double x = sim.dose().sum_disc(q, 0.015) / ideal.sum_disc(q, 0.015);
       a = std::min(a, x), b = std::max(b, x);

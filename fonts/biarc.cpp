@@ -8,10 +8,11 @@
 #include <numbers>
 #include <optional>
 
+#include "base/numbers.hpp"
+
 namespace mark {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Pieces are halved at most this often: 2^-14 of a glyph curve is far below any tolerance that
 // makes sense, so hitting the limit means a degenerate curve, not a real shape.
 constexpr int kMaxDepth = 14;
@@ -25,13 +26,6 @@ constexpr int kArcSamples = 8;
 constexpr double kAcceptFraction = 0.9;
 
 double cross(const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-bool angle_on_sweep(double a, double start, double sweep) {
-  const double from = sweep >= 0 ? start : start + sweep;
-  double d = std::fmod(a - from, 2 * kPi);
-  if (d < 0) d += 2 * kPi;
-  return d <= std::abs(sweep);
-}
 
 double distance_to_segment(const Point& a, const Point& b, const Point& p) {
   const Point ab = b - a;

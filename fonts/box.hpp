@@ -26,6 +26,13 @@ struct Box {
     add(b.min);
     add(b.max);
   }
+  // The box with `by` added on every side.
+  Box grown(double by) const {
+    Box g;
+    g.add(min - Point(by, by));
+    g.add(max + Point(by, by));
+    return g;
+  }
   bool contains(const Box& b, double tol = 0.0) const {
     return b.empty() || (b.min.x() >= min.x() - tol && b.min.y() >= min.y() - tol &&
                          b.max.x() <= max.x() + tol && b.max.y() <= max.y() + tol);

@@ -6,12 +6,11 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
 #include "fonts/overloaded.hpp"
 
 namespace mark {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // Unit vector of the ellipse frame: R(rotation)·(rx cos θ, ry sin θ) without the centre.
 Point ellipse_offset(const EllipticalArc& e, double theta) {
@@ -26,15 +25,14 @@ Point ellipse_derivative(const EllipticalArc& e, double theta) {
   return {c * x - s * y, s * x + c * y};
 }
 
-// True when angle a (radians) lies on the sweep from `start` by `sweep`.
+}  // namespace
+
 bool angle_on_sweep(double a, double start, double sweep) {
-  double from = sweep >= 0 ? start : start + sweep;
+  const double from = sweep >= 0 ? start : start + sweep;
   double d = std::fmod(a - from, 2 * kPi);
   if (d < 0) d += 2 * kPi;
   return d <= std::abs(sweep);
 }
-
-}  // namespace
 
 Element Element::line(const Point& a, const Point& b, bool laser) { return {Line{a, b}, laser}; }
 

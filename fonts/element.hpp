@@ -89,4 +89,7 @@ class Element {
 // Length of an elliptical arc between two parameter values (θ, not t).
 double ellipse_arc_length(double rx, double ry, double theta0, double theta1);
 
+// True when angle a (radians) lies on the sweep from `start` by `sweep` (either sign).
+bool angle_on_sweep(double a, double start, double sweep);
+
 }  // namespace mark

@@ -32,6 +32,9 @@
 
 namespace mark::lmc {
 
+// The board's clock: every delay and timed word counts ticks of 10 µs.
+inline constexpr double kTick_s = 10e-6;
+
 // ---------------------------------------------------------------------------------------------
 // Opcodes (names as galvoplotter's consts.py, without the "list" prefix).
 enum class Op : std::uint16_t {

@@ -8,8 +8,6 @@
 namespace mark::lmc {
 namespace {
 
-constexpr double kTick_s = 10e-6;
-
 std::string hex(std::uint16_t v) {
   char buf[8];
   std::snprintf(buf, sizeof buf, "0x%04X", v);

@@ -6,7 +6,6 @@
 
 namespace mark::lmc {
 namespace {
-constexpr double kTick_s = 10e-6;
 std::uint64_t ticks_of(double seconds) {
   return seconds > 0 ? static_cast<std::uint64_t>(std::llround(seconds / kTick_s)) : 0;
 }

@@ -13,7 +13,6 @@ namespace mark::lmc {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr double kTick_s = 10e-6;
 
 template <class... A>
 std::string fmt(const char* f, A... a) {

@@ -18,12 +18,6 @@ constexpr int fine_rings = static_cast<int>(1.0 / fine_cell_mm);  // 1 mm; beyon
 constexpr double coarse_cell_mm = 1.0;
 constexpr double no_median_ratio = 1e9;  // reported when most of the strokes got no dose
 
-struct Stroke {
-  std::uint32_t first_segment;
-  std::uint32_t last_segment;
-  bool closed;
-};
-
 // A point every ≤ step along the intended strokes (midpoints of equal pieces of each segment),
 // its share of the stroke length, and its stroke. Not stored: a long text has millions (a point
 // every 2 µm of its strokes), and each is computed again from its segment when it is read.
@@ -78,6 +72,13 @@ struct QualityReference::Data {
   double pixel_mm;
   std::shared_ptr<const std::vector<Segment>> shared_segments;  // with the grids
   std::span<const Segment> segments;                            // *shared_segments
+  // Nested, not in the anonymous namespace: Data has linkage, and a unity build would warn
+  // (-Wsubobject-linkage) about a member whose type has none.
+  struct Stroke {
+    std::uint32_t first_segment;
+    std::uint32_t last_segment;
+    bool closed;
+  };
   std::vector<Stroke> strokes;
   std::vector<std::uint32_t> stroke_of_segment;
   // Index of each segment's first sample (one entry more than segments: the count at the end),
@@ -286,7 +287,7 @@ Quality QualityReference::evaluate(const LitPaths& lit, const DoseRaster& dose, 
   std::vector<Weighted> ratio, stroke_ratio;
   ratio.reserve(d.sample_count());
   double least_stroke = std::numeric_limits<double>::infinity();
-  for (const Stroke& stroke : d.strokes) {
+  for (const Data::Stroke& stroke : d.strokes) {
     // A stroke's median is its energy per mm.
     stroke_ratio.clear();
     double length = 0;

@@ -31,7 +31,7 @@
 namespace mark::cli {
 namespace {
 
-struct Args {
+struct CodeCommandArgs {
   std::string symbology;
   std::string data;
   CodeArgs code;
@@ -47,7 +47,7 @@ struct Args {
   bool json = false;
 };
 
-JobSpec make_spec(const Args& a) {
+JobSpec make_spec(const CodeCommandArgs& a) {
   JobSpec spec;
   spec.verify = to_verify_options(a.verify);
   // Marks end a beam radius inside their modules unless the hatch inset says otherwise.
@@ -98,7 +98,7 @@ void print_summary(const JobSpec& spec, const JobResult& r) {
   }
 }
 
-int run_code(const Args& a) {
+int run_code(const CodeCommandArgs& a) {
   const JobSpec spec = make_spec(a);
   check_standard_output({{"--preview", &a.preview}, {"--dose-png", &a.dose_png}}, a.json);
   if (!a.preview.empty()) check_output_path("--preview", a.preview, {".svg", ".png"});
@@ -152,7 +152,7 @@ int run_code(const Args& a) {
 }  // namespace
 
 Command make_code_command() {
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<CodeCommandArgs>();
   auto sub_app = std::make_shared<CLI::App*>();
   return Command(
       [a, sub_app](CLI::App& app) {

@@ -20,7 +20,7 @@
 namespace mark::cli {
 namespace {
 
-struct Args {
+struct LogArgs {
   StoreArgs store;
   std::string since, serial, job;
   std::optional<std::string> text;
@@ -42,7 +42,7 @@ void parse_serial(const std::string& s, AuditFilter& f) {
   if (eq != std::string::npos) f.counter = s.substr(0, eq);
 }
 
-int run_log(const Args& a) {
+int run_log(const LogArgs& a) {
   AuditFilter f;
   if (!a.since.empty()) {
     const auto t = parse_since(a.since, SystemClock().now());
@@ -76,7 +76,7 @@ int run_log(const Args& a) {
 }  // namespace
 
 Command make_log_command() {
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<LogArgs>();
   return Command(
       [a](CLI::App& app) {
         auto* sub = app.add_subcommand("log", "print the audit log of the serial store (read-only)");

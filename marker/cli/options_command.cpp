@@ -14,7 +14,7 @@
 namespace mark::cli {
 namespace {
 
-struct Args {
+struct OptionsArgs {
   std::string table;
   bool markdown = false;
   bool json = false;
@@ -45,7 +45,7 @@ std::vector<const SettingTable*> chosen(const std::string& id) {
   throw InputError("options: '" + id + "' is not a settings table (" + ids + ")");
 }
 
-int run_options(const Args& a) {
+int run_options(const OptionsArgs& a) {
   const std::vector<const SettingTable*> tables = chosen(a.table);
   if (a.json) {
     nlohmann::json out = nlohmann::json::array();
@@ -77,7 +77,7 @@ int run_options(const Args& a) {
 }  // namespace
 
 Command make_options_command() {
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<OptionsArgs>();
   return Command(
       [a](CLI::App& app) {
         auto* sub = app.add_subcommand(

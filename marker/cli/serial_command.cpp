@@ -22,7 +22,7 @@
 namespace mark::cli {
 namespace {
 
-struct Args {
+struct SerialArgs {
   std::string name;
   long long value = 0;
   long long count = 0;
@@ -38,7 +38,7 @@ struct Loaded {
   const CounterSpec* spec = nullptr;
 };
 
-Loaded load(const Args& a, bool need_job) {
+Loaded load(const SerialArgs& a, bool need_job) {
   Loaded l;
   if (a.job.empty()) {
     if (need_job) throw InputError("serial: give --job FILE: the job holds the counter's rules (step, limit, resets)");
@@ -57,7 +57,7 @@ StoreSettings settings() {
   return s;
 }
 
-int show(const Args& a) {
+int show(const SerialArgs& a) {
   Loaded l = load(a, false);
   const SysTime now = SystemClock().now();
   const ShiftTable shifts = l.job ? l.job->shifts : ShiftTable{};
@@ -88,7 +88,7 @@ int show(const Args& a) {
   return 0;
 }
 
-int create(const Args& a) {
+int create(const SerialArgs& a) {
   Loaded l = load(a, false);
   std::int64_t start = 1;
   if (a.start) start = *a.start;
@@ -108,7 +108,7 @@ int create(const Args& a) {
   return 0;
 }
 
-int set_or_reserve(const Args& a, bool reserve) {
+int set_or_reserve(const SerialArgs& a, bool reserve) {
   Loaded l = load(a, true);
   auto store = open_production_store(a.store, StoreAccess::existing, settings());
   MarkContext ctx = mark_context(a.station, a.job, l.bytes);
@@ -133,7 +133,7 @@ int set_or_reserve(const Args& a, bool reserve) {
 }  // namespace
 
 Command make_serial_command() {
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<SerialArgs>();
   auto subs = std::make_shared<std::array<CLI::App*, 4>>();
   return Command(
       [=](CLI::App& app) {

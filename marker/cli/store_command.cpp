@@ -22,7 +22,7 @@
 namespace mark::cli {
 namespace {
 
-struct Args {
+struct StoreCommandArgs {
   StoreArgs store;
   std::string target;
   bool quick = false, json = false;
@@ -38,7 +38,7 @@ int path() {
   return 0;
 }
 
-int check(const Args& a) {
+int check(const StoreCommandArgs& a) {
   StoreSettings settings;
   settings.interrupts = interrupt_count;
   auto store = open_production_store(a.store, StoreAccess::read_only, std::move(settings));
@@ -56,7 +56,7 @@ int check(const Args& a) {
   return problems.empty() ? 0 : 1;
 }
 
-int backup(const Args& a) {
+int backup(const StoreCommandArgs& a) {
   const std::string source = store_location(a.store.store);
   if (is_postgres_url(source))
     throw InputError("store backup copies an SQLite store; back up a PostgreSQL store with pg_dump");
@@ -74,7 +74,7 @@ int backup(const Args& a) {
 }  // namespace
 
 Command make_store_command() {
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<StoreCommandArgs>();
   auto subs = std::make_shared<std::array<CLI::App*, 3>>();
   return Command(
       [=](CLI::App& app) {

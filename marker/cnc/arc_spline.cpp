@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/numbers.hpp"
 #include "fonts/overloaded.hpp"
 #include "marker/cnc/element_distance.hpp"
 #include "marker/geometry/flatten.hpp"
@@ -11,7 +12,6 @@
 namespace mark {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr int kMaxDepth = 24;
 // Share of the tolerance the geometry may use; the rest is kept for rounding coordinates to the
 // output precision.

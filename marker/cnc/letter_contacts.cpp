@@ -5,8 +5,6 @@
 namespace mark {
 namespace {
 
-constexpr double kChordTolMm = 0.001;
-constexpr double kArcTolMm = 0.002;
 constexpr double kMinSharedMm2 = 1e-6;  // below this, round-off of the polygons, not contact
 
 }  // namespace

@@ -14,8 +14,6 @@ namespace {
 
 using namespace ClipperLib;
 
-constexpr double kChordTolMm = 0.001;  // strokes flattened for Clipper
-constexpr double kArcTolMm = 0.002;    // Clipper's round joins
 // Polygons approximate round offsets from inside; growing the keep-out by the approximation
 // error keeps the tool centre at least a tool radius from the true letter region. Clipper
 // rounds the number of steps of a round join, so a short join may bow up to (1.5)² times its
@@ -27,7 +25,7 @@ constexpr double kUncutFilmMm = 0.02;
 // clears a 800 mm wide plate with it); more would take Clipper minutes and the machine days.
 constexpr double kMaxPocketLoops = 1000;
 
-std::string mm(double v) {
+std::string mm_text(double v) {
   std::ostringstream s;
   s << v << " mm";
   return s.str();
@@ -61,7 +59,7 @@ ProtrusionResult protrusion_toolpath(const Figure& figure, const CutSettings& s,
   if (ps.stroke_width_mm < 0 || ps.margin_mm < 0 || ps.stepover_mm < 0)
     throw InputError("stroke width, margin and step-over must not be negative");
   if (res.stepover_mm > r)
-    throw InputError("step-over " + mm(res.stepover_mm) + " is larger than the tool radius " + mm(r) +
+    throw InputError("step-over " + mm_text(res.stepover_mm) + " is larger than the tool radius " + mm_text(r) +
                      ": the pocket loops would leave ridges between them");
 
   const Paths strokes = stroke_polylines(figure, kChordTolMm);
@@ -87,7 +85,7 @@ ProtrusionResult protrusion_toolpath(const Figure& figure, const CutSettings& s,
   const double nesting = std::min(inset.width(), inset.height()) / 2 / res.stepover_mm;
   if (nesting > kMaxPocketLoops)
     throw InputError("the pocket around the letters needs up to " + std::to_string(std::lround(nesting)) +
-                     " nested loops at a step-over of " + mm(res.stepover_mm) + ", more than " +
+                     " nested loops at a step-over of " + mm_text(res.stepover_mm) + ", more than " +
                      std::to_string(static_cast<int>(kMaxPocketLoops)) +
                      "; raise the step-over or narrow the margin");
   std::vector<PocketLoop> loops = pocket_loops(res.tool_region, res.stepover_mm, kArcTolMm, progress);

@@ -6,12 +6,11 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
 #include "marker/limits/code_settings.hpp"
 
 namespace mark {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // The modules to mark, quiet zone included: rows/cols of the extended grid, (0, 0) the top-left
 // quiet-zone module (linear codes have no quiet rows).

@@ -12,6 +12,11 @@
 
 namespace mark {
 
+// Tolerances of the stroke outlines handed to Clipper: strokes flattened within kChordTolMm, round
+// joins within kArcTolMm (the CNC protrusion check and the letter contacts use the same).
+inline constexpr double kChordTolMm = 0.001;
+inline constexpr double kArcTolMm = 0.002;
+
 inline constexpr double kNmPerMm = 1e6;
 
 ClipperLib::IntPoint to_nm(const Point& p);

@@ -11,8 +11,8 @@
 namespace mark {
 namespace {
 
-constexpr const char* kFormat = "marker lag pattern";
-constexpr int kVersion = 1;
+constexpr const char* kPatternFormat = "marker lag pattern";
+constexpr int kPatternVersion = 1;
 
 
 // Lays the lines out from the pattern's parameters (one function, so a parsed pattern is the
@@ -56,10 +56,10 @@ void check_field(const LagPattern& p, const HeadModel& head) {
   }
 }
 
-constexpr HeadFileKind kKind{"lag pattern", kFormat, kVersion};
+constexpr HeadFileKind kPatternKind{"lag pattern", kPatternFormat, kPatternVersion};
 
 double number(const nlohmann::json& j, const char* key, double lo, double hi, std::string_view where) {
-  return head_file_number(kKind, j, key, lo, hi, where);
+  return head_file_number(kPatternKind, j, key, lo, hi, where);
 }
 
 }  // namespace
@@ -128,8 +128,8 @@ std::vector<ScanSample> lag_pattern_samples(const LagPattern& pattern, double ti
 std::string lag_pattern_json(const LagPattern& p) {
   const Vec2 lo = p.min(), hi = p.max();
   nlohmann::ordered_json j;
-  j["format"] = kFormat;
-  j["version"] = kVersion;
+  j["format"] = kPatternFormat;
+  j["version"] = kPatternVersion;
   j["head"] = p.head;
   j["centre_mm"] = {(lo.x + hi.x) / 2, (lo.y + hi.y) / 2};
   j["length_mm"] = p.length_mm;
@@ -140,7 +140,7 @@ std::string lag_pattern_json(const LagPattern& p) {
 }
 
 LagPattern parse_lag_pattern(std::string_view text, std::string_view where) {
-  const nlohmann::json j = parse_head_file(kKind, text, where);
+  const nlohmann::json j = parse_head_file(kPatternKind, text, where);
   LagPattern p;
   const auto head = j.find("head");
   if (head != j.end() && head->is_string()) p.head = head->get<std::string>();
@@ -150,24 +150,24 @@ LagPattern parse_lag_pattern(std::string_view text, std::string_view where) {
   const auto centre = j.find("centre_mm");
   if (centre == j.end() || !centre->is_array() || centre->size() != 2 || !(*centre)[0].is_number() ||
       !(*centre)[1].is_number())
-    head_file_error(kKind, where, "'centre_mm' must be [x, y]");
+    head_file_error(kPatternKind, where, "'centre_mm' must be [x, y]");
   const auto speeds = j.find("speeds_mm_s");
   if (speeds == j.end() || !speeds->is_array() || speeds->size() < 3 || speeds->size() > 20)
-    head_file_error(kKind, where, "'speeds_mm_s' must list 3 to 20 speeds");
+    head_file_error(kPatternKind, where, "'speeds_mm_s' must list 3 to 20 speeds");
   for (const auto& s : *speeds) {
     if (!s.is_number() || !(s.get<double>() >= 1 && s.get<double>() <= 1e5))
-      head_file_error(kKind, where, "'speeds_mm_s' holds a value outside 1 to 100000 mm/s");
+      head_file_error(kPatternKind, where, "'speeds_mm_s' holds a value outside 1 to 100000 mm/s");
     p.speeds_mm_s.push_back(s.get<double>());
   }
   const Vec2 c{(*centre)[0].get<double>(), (*centre)[1].get<double>()};
   if (!std::isfinite(c.x) || !std::isfinite(c.y) || std::abs(c.x) > 1e4 || std::abs(c.y) > 1e4)
-    head_file_error(kKind, where, "'centre_mm' lies outside ±10000 mm");
+    head_file_error(kPatternKind, where, "'centre_mm' lies outside ±10000 mm");
   lay_out(p, c);
   return p;
 }
 
 LagPattern load_lag_pattern(const std::string& path) {
-  return parse_lag_pattern(read_head_file(kKind, path), path);
+  return parse_lag_pattern(read_head_file(kPatternKind, path), path);
 }
 
 }  // namespace mark

@@ -10,7 +10,7 @@ namespace {
 // How many converted commands the worker lets through at a time: a board's chunk (the job
 // runner submits 256), so the consumer is rarely more than one chunk behind.
 constexpr std::size_t kPublishEvery = 256;
-constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
+constexpr std::size_t kNoIndex = std::numeric_limits<std::size_t>::max();
 
 }  // namespace
 
@@ -74,7 +74,7 @@ void ProgramStream::convert_here() {
   // Whole, on the calling thread: a refusal throws before the caller has seen a command.
   count_ = count_program(plan_, device_);
   program_.commands.reserve(count_.commands + 1);
-  convert({}, kNever);
+  convert({}, kNoIndex);
   data_ = program_.commands.data();
   converted_.store(program_.commands.size(), std::memory_order_relaxed);
   ended_.store(true, std::memory_order_relaxed);
@@ -95,7 +95,7 @@ void ProgramStream::work(std::size_t half) {
       convert([this](std::size_t n) { converted_.store(n, std::memory_order_release); },
               kPublishEvery);
     } else {
-      convert({}, kNever);
+      convert({}, kNoIndex);
     }
   } catch (...) {
     error_ = std::current_exception();

@@ -12,12 +12,11 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
 #include "fonts/utf8.hpp"
 
 namespace mark {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 double radians(double deg) { return deg * kPi / 180.0; }
 

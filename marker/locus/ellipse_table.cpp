@@ -4,10 +4,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/numbers.hpp"
+
 namespace mark {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Node spacing: a turn of the tangent is split into this many steps, more for flatter ellipses
 // (whose curvature also changes faster), and no step spans more than kMaxStep of the parameter
 // (so 5-point Gauss–Legendre stays exact on it). The interpolant's error falls with the fifth

@@ -7,7 +7,6 @@ namespace mark {
 namespace {
 
 // Elements shorter than this are points: they take no time and produce no sample.
-constexpr double kMinLength_mm = 1e-9;
 
 // Samples of one command given the ideal time so far (updated) and the samples already
 // counted. Shared by the generator and count_samples so both agree to the sample.

@@ -8,8 +8,6 @@
 namespace mark {
 namespace {
 
-constexpr double kMinLength_mm = 1e-9;  // as the constant-speed generator: shorter is a point
-
 SpeedProfile profile_of(const Command& c) {
   if (c.planned())
     return SpeedProfile::make(c.length, c.entry_speed_mm_s, c.exit_speed_mm_s, c.speed_mm_s,

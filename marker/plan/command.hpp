@@ -18,6 +18,9 @@
 
 namespace mark {
 
+// A move shorter than this is a point: the speed plan and the locus generators skip it alike.
+inline constexpr double kMinLength_mm = 1e-9;
+
 enum class CommandKind { jump, line, arc, ellipse, dwell };
 
 enum class CommandRole {

@@ -12,7 +12,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Moves shorter than this take no time and do not separate two others (the locus skips them).
-constexpr double kMinLength_mm = 1e-9;
 
 // ρ(θ) = (rx² sin²θ + ry² cos²θ)^(3/2) / (rx·ry) along an ellipse, smallest at the ends of its
 // longer axis; over an arc of it, at those points if the sweep includes them, else at an end.

@@ -27,12 +27,6 @@ std::vector<LegendEntry> legend(const PreviewOptions& o, bool two_panels) {
 
 void set_colour(cairo_t* cr, const Rgb& c, double alpha = 1) { cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha); }
 
-Box grown(const Box& b, double by) {
-  Box g;
-  g.add(b.min - Point(by, by));
-  g.add(b.max + Point(by, by));
-  return g;
-}
 
 // The pen's route through the figure: travel from each stroke's end to the next stroke's start,
 // whether the glyph data holds that move as a laser-off element or it falls between glyphs.
@@ -126,7 +120,7 @@ void draw_panel(Canvas& canvas, const Figure& figure, const Field& field, const 
 
 void write_figure_preview(const Figure& figure, const Field& field, const std::string& path,
                           const PreviewOptions& options) {
-  const Box overview = grown(field.box(), field.size_mm * 0.02);
+  const Box overview = field.box().grown(field.size_mm * 0.02);
   const Box bounds = figure.bounds();
   const bool small = !bounds.empty() && std::max(bounds.width(), bounds.height()) < 0.4 * field.size_mm;
   if (options.px_per_mm > 0 || !small) {
@@ -138,7 +132,7 @@ void write_figure_preview(const Figure& figure, const Field& field, const std::s
     return;
   }
   // A small figure gets two panels: the whole field, and the figure enlarged beside it.
-  const Box detail = grown(bounds, std::max(0.5, 0.08 * std::max(bounds.width(), bounds.height())));
+  const Box detail = bounds.grown(std::max(0.5, 0.08 * std::max(bounds.width(), bounds.height())));
   const double detail_scale = std::min(kDetailPx / detail.width(), kDetailPx / detail.height());
   const double detail_h = detail.height() * detail_scale;
   const double overview_scale = kOverviewPx / overview.width();

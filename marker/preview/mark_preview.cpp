@@ -35,12 +35,6 @@ std::vector<LegendEntry> legend(const Plan& plan) {
   return l;
 }
 
-Box grown(const Box& b, double by) {
-  Box g;
-  g.add(b.min - Point(by, by));
-  g.add(b.max + Point(by, by));
-  return g;
-}
 
 // The dose under `view` as an image of the canvas's size: each image pixel shows the largest
 // dose of the raster pixels it covers, scaled to the raster's largest pixel.
@@ -95,7 +89,7 @@ void stroke_role(Canvas& canvas, const Plan& plan, CommandRole role, const Rgb& 
 // The picture drawn on a canvas for `path` (its extension picks SVG or PNG), not yet encoded.
 std::unique_ptr<Canvas> draw_mark_preview(const Plan& plan, const DoseRaster& dose, const std::string& path) {
   const Box bounds = plan.bounds();
-  const Box view = grown(bounds, std::max(0.05, 0.03 * std::max(bounds.width(), bounds.height())));
+  const Box view = bounds.grown(std::max(0.05, 0.03 * std::max(bounds.width(), bounds.height())));
   // At most one image pixel per raster pixel, and no larger than the size limits.
   const double scale = std::min({1.0 / dose.pixel_mm(), kMaxWidthPx / view.width(),
                                  kMaxHeightPx / view.height()});

@@ -6,12 +6,11 @@
 #include <numbers>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
 #include "fonts/element.hpp"
 
 namespace mark {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 void expect_near(const Point& a, const Point& b, double tol) {
   EXPECT_NEAR(a.x(), b.x(), tol);

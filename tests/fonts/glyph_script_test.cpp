@@ -9,18 +9,15 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
+#include "tests/fonts/loader_test_util.hpp"
 
 namespace mark {
 namespace {
 
 using ::testing::HasSubstr;
 
-constexpr double kPi = std::numbers::pi;
-
-void expect_point(const Point& p, double x, double y) {
-  EXPECT_NEAR(p.x(), x, 1e-12);
-  EXPECT_NEAR(p.y(), y, 1e-12);
-}
+using test::expect_point;  // tests/fonts/loader_test_util.hpp, within 1e-12
 
 TEST(GlyphScript, LinesAndAnAutomaticMove) {
   const Glyph g = parse_glyph_script(U'A', 9, "M1,0 L4.5,10 8,0 M6.95,3 L2.05,3");

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/numbers.hpp"
 #include "fonts/loaders.hpp"
 #include "loader_test_util.hpp"
 
@@ -14,7 +15,6 @@ namespace {
 using test::expect_font_error;
 using test::expect_point;
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180;
 
 const StrokeFont& sample() {

@@ -7,6 +7,7 @@
 #include <map>
 #include <numbers>
 
+#include "base/numbers.hpp"
 #include "fonts/loaders.hpp"
 #include "fonts/stroke_join.hpp"
 #include "loader_test_util.hpp"
@@ -16,8 +17,6 @@ namespace {
 
 using test::expect_font_error;
 using test::expect_point;
-
-constexpr double kPi = std::numbers::pi;
 
 const StrokeFont& standard() {
   static const StrokeFont font = load_font_file(test::kLibreCadDir + "/standard.lff");

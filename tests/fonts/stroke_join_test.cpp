@@ -8,13 +8,12 @@
 
 #include <numbers>
 
+#include "base/numbers.hpp"
 #include "fonts/loaders.hpp"
 #include "loader_test_util.hpp"
 
 namespace mark {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // An 'O' of radius r drawn as two halves, the second starting `miss` away from where the first
 // ended, and drawn in the other direction.

@@ -21,7 +21,7 @@ HeadProfile sample_profile() {
   return p;
 }
 
-std::string error_of(const std::string& json) {
+std::string profile_error_of(const std::string& json) {
   try {
     parse_head_profile(json, "p.json");
   } catch (const InputError& e) {
@@ -65,13 +65,13 @@ TEST(HeadProfile, LagAndInverseFilterTermsOfEachModel) {
 
 TEST(HeadProfile, BadFilesAreRefusedNamingKeyAndRange) {
   auto j = nlohmann::json::parse(head_profile_json(sample_profile()));
-  EXPECT_NE(error_of("{").find("p.json: not JSON"), std::string::npos);
-  EXPECT_NE(error_of("[1,2]").find("one JSON object"), std::string::npos);
-  EXPECT_NE(error_of("{\"tau_s\": 1e400}").find("not JSON"), std::string::npos);  // found by fuzzing
+  EXPECT_NE(profile_error_of("{").find("p.json: not JSON"), std::string::npos);
+  EXPECT_NE(profile_error_of("[1,2]").find("one JSON object"), std::string::npos);
+  EXPECT_NE(profile_error_of("{\"tau_s\": 1e400}").find("not JSON"), std::string::npos);  // found by fuzzing
   auto with = [&](const char* key, nlohmann::json value) {
     auto k = j;
     k[key] = value;
-    return error_of(k.dump());
+    return profile_error_of(k.dump());
   };
   EXPECT_NE(with("format", "other").find("'format'"), std::string::npos);
   EXPECT_NE(with("version", 2).find("'version' must be 1"), std::string::npos);
@@ -83,11 +83,11 @@ TEST(HeadProfile, BadFilesAreRefusedNamingKeyAndRange) {
   EXPECT_NE(with("tau_s", 0.12).find("'tau_s' is 0.12"), std::string::npos);  // ms given as s
   auto k = j;
   k.erase("omega_n_rad_s");  // the chosen (second-order) model's parameter
-  EXPECT_NE(error_of(k.dump()).find("'omega_n_rad_s' is missing"), std::string::npos);
+  EXPECT_NE(profile_error_of(k.dump()).find("'omega_n_rad_s' is missing"), std::string::npos);
   k = j;
   k["model"] = "first";
   k.erase("omega_n_rad_s");  // not needed by a first-order profile
-  EXPECT_EQ(error_of(k.dump()), "");
+  EXPECT_EQ(profile_error_of(k.dump()), "");
 }
 
 TEST(HeadProfile, SaveWritesTheWholeFileAndLoadReadsIt) {

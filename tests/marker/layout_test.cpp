@@ -5,14 +5,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/numbers.hpp"
 #include "fonts/error.hpp"
 #include "fonts/stroke_font.hpp"
 #include "marker/layout/layout.hpp"
 
 namespace mark {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // The paper's Table 2, standard text height 3: start, end and radius of each entity.
 StrokeFont paper_font() {

@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "base/numbers.hpp"
 #include "marker/locus/locus_generator.hpp"
 #include "marker/locus/path_walker.hpp"
 
@@ -14,8 +15,6 @@ namespace mark {
 namespace {
 
 constexpr double kTick = 10e-6;
-constexpr double kPi = std::numbers::pi;
-
 std::vector<ScanSample> run(const std::vector<Command>& commands, std::size_t block = 4096,
                             double tick = kTick) {
   LocusGenerator gen(commands, tick);

@@ -16,12 +16,12 @@ namespace {
 namespace fs = std::filesystem;
 
 using Result = test::CliResult;
-const auto run = test::run_cli;
+const auto run_peen = test::run_cli;
 
 fs::path temp_file(const std::string& name) { return test::fresh_temp_file("marker_peen_cli_test", name); }
 
 TEST(PeenCli, JsonForTheChosenPlanner) {
-  const Result r = run({"peen", "AB12-345678C", "--height", "3.175", "--json"});
+  const Result r = run_peen({"peen", "AB12-345678C", "--height", "3.175", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["planner"], "optimized");
@@ -38,7 +38,7 @@ TEST(PeenCli, JsonForTheChosenPlanner) {
 }
 
 TEST(PeenCli, CompareRunsAllThreeUnderOneModel) {
-  const Result r = run({"peen", "8888888", "--font", "10x16", "--height", "12", "--align",
+  const Result r = run_peen({"peen", "8888888", "--font", "10x16", "--height", "12", "--align",
                         "center", "--y", "-6", "--window", "63x38", "--compare", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -54,7 +54,7 @@ TEST(PeenCli, CompareRunsAllThreeUnderOneModel) {
   EXPECT_NEAR(j["window_mm"]["x_max"].get<double>(), 31.5, 1e-12);
   // The text table has a header and one row per planner.
   const Result t =
-      run({"peen", "8888888", "--font", "10x16", "--height", "12", "--align", "center", "--compare"});
+      run_peen({"peen", "8888888", "--font", "10x16", "--height", "12", "--align", "center", "--compare"});
   ASSERT_EQ(t.code, 0) << t.err;
   EXPECT_NE(t.out.find("snake"), std::string::npos);
   EXPECT_NE(t.out.find("block"), std::string::npos);
@@ -65,7 +65,7 @@ TEST(PeenCli, GantryOptionsChangeTheTime) {
   auto time = [](std::vector<std::string> extra) {
     std::vector<std::string> args = {"peen", "H", "--planner", "block", "--json"};
     args.insert(args.end(), extra.begin(), extra.end());
-    const Result r = run(args);
+    const Result r = run_peen(args);
     EXPECT_EQ(r.code, 0) << r.err;
     return nlohmann::json::parse(r.out);
   };
@@ -82,7 +82,7 @@ TEST(PeenCli, GantryOptionsChangeTheTime) {
 TEST(PeenCli, WritesCsvGcodeAndPreview) {
   const fs::path csv = temp_file("plan.csv"), ngc = temp_file("plan.ngc"), svg = temp_file("plan.svg");
   for (const auto& [out, extra] : {std::pair{csv, "-o"}, std::pair{ngc, "-o"}, std::pair{svg, "--preview"}}) {
-    const Result r = run({"peen", "VIN-7", "--font", "7x9", extra, out.string()});
+    const Result r = run_peen({"peen", "VIN-7", "--font", "7x9", extra, out.string()});
     ASSERT_EQ(r.code, 0) << r.err;
     ASSERT_TRUE(fs::exists(out)) << out;
     EXPECT_GT(fs::file_size(out), 100u);
@@ -94,7 +94,7 @@ TEST(PeenCli, WritesCsvGcodeAndPreview) {
 }
 
 TEST(PeenCli, StrokeFontsBecomeContinuousDots) {
-  const Result r = run({"peen", "SN 42", "--font", "builtin", "--height", "4", "--pitch", "0.4", "--json"});
+  const Result r = run_peen({"peen", "SN 42", "--font", "builtin", "--height", "4", "--pitch", "0.4", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["characters"], 4);  // the space has no dots
@@ -102,7 +102,7 @@ TEST(PeenCli, StrokeFontsBecomeContinuousDots) {
   // Dots at most a pitch apart along every stroke: at least length / pitch of them, and no more
   // than one per pitch plus both ends of every element.
   const fs::path svg = temp_file("sn42.svg");
-  const Result layout = run({"preview", "SN 42", "--height", "4", "--align", "center", "-o", svg.string(), "--json"});
+  const Result layout = run_peen({"preview", "SN 42", "--height", "4", "--align", "center", "-o", svg.string(), "--json"});
   ASSERT_EQ(layout.code, 0) << layout.err;
   const auto l = nlohmann::json::parse(layout.out);
   const double per_pitch = l["mark_length_mm"].get<double>() / 0.4;
@@ -112,7 +112,7 @@ TEST(PeenCli, StrokeFontsBecomeContinuousDots) {
 
 // With its defaults (5x7, 5 mm, centred) an ordinary 12-character text fits the field, centred.
 TEST(PeenCli, DefaultsFitOrdinaryText) {
-  const Result r = run({"peen", "ABCDEFGHIJKL", "--json"});
+  const Result r = run_peen({"peen", "ABCDEFGHIJKL", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["characters"], 12);
@@ -133,7 +133,7 @@ TEST(PeenCli, BadInputIsOneLineAndExitOne) {
         {"peen", "AB", "--pitch", "0", "--font", "builtin"},                      // impossible pitch
         {"peen", "AB", "-o", temp_file("plan.pdf").string()},                     // unknown format
         {"peen", "AB", "--font", "10x16", "--height", "300"}}) {                  // leaves the field
-    const Result r = run(args);
+    const Result r = run_peen(args);
     EXPECT_EQ(r.code, 1) << args[1] << " " << (args.size() > 2 ? args[2] : "");
     EXPECT_EQ(r.err.rfind("marker: ", 0), 0u) << r.err;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;

@@ -5,14 +5,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/numbers.hpp"
 #include "fonts/error.hpp"
 #include "marker/peen/dot_fonts.hpp"
 #include "marker/peen/dot_layout.hpp"
 
 namespace mark {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 const Dot* find_dot(const DotText& t, std::size_t character, DotCell cell) {
   for (const Dot& d : t.dots)

@@ -16,7 +16,7 @@ namespace {
 
 using test::figure_of;
 
-constexpr double kTau = 0.12e-3;  // 12 ticks of 10 µs
+constexpr double kDelayTau = 0.12e-3;  // 12 ticks of 10 µs
 
 // A stroke turning 90° then 45°: (0,0) → (1,0) → (1,1) → (1 − 0.7071, 1.7071).
 Figure zigzag() {
@@ -26,7 +26,7 @@ Figure zigzag() {
 }
 
 TEST(PlanDelays, DwellsInTicksFromTau) {
-  Pen pen = default_pen(CornerStrategy::delays, kTau, 500, 5000);
+  Pen pen = default_pen(CornerStrategy::delays, kDelayTau, 500, 5000);
   pen.jump_settle_mm = 0;  // fixed jump delay only
   const Plan p = plan_strokes(strokes_of(zigzag()), pen, Point(-2, 0));
   const auto& c = p.commands;
@@ -67,7 +67,7 @@ TEST(PlanDelays, DwellsInTicksFromTau) {
 }
 
 TEST(PlanDelays, StraightContinuationGetsNoPolygonDelay) {
-  const Pen pen = default_pen(CornerStrategy::delays, kTau, 500, 5000);
+  const Pen pen = default_pen(CornerStrategy::delays, kDelayTau, 500, 5000);
   const Plan p = plan_figure(
       figure_of({{Element::line({0, 0}, {1, 0}), Element::line({1, 0}, {2, 0})}}), pen);
   std::size_t lit_dwells = 0;
@@ -76,7 +76,7 @@ TEST(PlanDelays, StraightContinuationGetsNoPolygonDelay) {
 }
 
 TEST(PlanDelays, VariableJumpDelaySettlesLongJumps) {
-  const Pen pen = default_pen(CornerStrategy::delays, kTau, 500, 5000);
+  const Pen pen = default_pen(CornerStrategy::delays, kDelayTau, 500, 5000);
   ASSERT_GT(pen.jump_settle_mm, 0);
   auto jump_delay_ticks = [&](double jump_mm) {
     const Plan p = plan_figure(figure_of({{Element::line({jump_mm, 0}, {jump_mm + 1, 0})}}), pen);
@@ -87,8 +87,8 @@ TEST(PlanDelays, VariableJumpDelaySettlesLongJumps) {
   // 2 mm at 5 m/s (0.4 ms): the lag built up is τ·v·(1 − e^(−T/τ)); it must decay to ε by the
   // time the laser comes on, 0.6τ after the delay.
   const double t = 2.0 / 5000;
-  const double a = transient_mm({0, 0}, {5000, 0}, t, {0, 0}, kTau);
-  const double want_s = kTau * std::log(a / pen.jump_settle_mm) - pen.laser_on_delay_s;
+  const double a = transient_mm({0, 0}, {5000, 0}, t, {0, 0}, kDelayTau);
+  const double want_s = kDelayTau * std::log(a / pen.jump_settle_mm) - pen.laser_on_delay_s;
   EXPECT_EQ(jump_delay_ticks(2.0), pen.ticks(want_s));
   EXPECT_GT(jump_delay_ticks(2.0), 24u);
   EXPECT_GE(jump_delay_ticks(20.0), jump_delay_ticks(2.0));

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/numbers.hpp"
 #include "driver/sim/quality_class.hpp"
 #include "driver/sim/sim_scanner.hpp"
 #include "fonts/catalog.hpp"
@@ -26,8 +27,6 @@
 
 namespace mark {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 std::vector<ScanSample> samples_of(const Plan& plan) {
   LocusGenerator gen(plan);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/numbers.hpp"
 #include "fonts/catalog.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/layout/layout.hpp"
@@ -19,8 +20,6 @@
 
 namespace mark {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 Pen lookahead_pen(double speed = 2000, bool feed_forward = false) {
   PenRules r;

@@ -54,7 +54,7 @@ void expect_pattern(const CorrectionTable& t) {
   EXPECT_EQ(t.entries[0][0], 0x8000 + 832);
 }
 
-std::string error_of(std::span<const std::uint8_t> b) {
+std::string cor_error_of(std::span<const std::uint8_t> b) {
   try {
     parse_cor(b, "lens.cor");
   } catch (const CorFileError& e) {
@@ -100,21 +100,21 @@ TEST(LmcCorFile, ReadsFromDiskAndRefusesWhatDoesNotFit) {
 
   auto b = legacy_file(1);
   b.resize(b.size() - 1);
-  EXPECT_NE(error_of(b).find("lens.cor: a legacy (int32) correction file needs 33836 bytes, this one has 33835"),
+  EXPECT_NE(cor_error_of(b).find("lens.cor: a legacy (int32) correction file needs 33836 bytes, this one has 33835"),
             std::string::npos)
-      << error_of(b);
+      << cor_error_of(b);
   b = legacy_file(1);
   put_i32(b, 0x24 + 8 * 100 + 4, 40000);
-  EXPECT_NE(error_of(b).find("correction entry 100 (row 1, column 35) dy = 40000 does not fit"),
+  EXPECT_NE(cor_error_of(b).find("correction entry 100 (row 1, column 35) dy = 40000 does not fit"),
             std::string::npos)
-      << error_of(b);
+      << cor_error_of(b);
   b = lmc1cor_file(1);
   put_f64(b, 0x210, std::numeric_limits<double>::quiet_NaN());
-  EXPECT_NE(error_of(b).find("correction entry 0 (row 0, column 0) dx = nan"), std::string::npos) << error_of(b);
+  EXPECT_NE(cor_error_of(b).find("correction entry 0 (row 0, column 0) dx = nan"), std::string::npos) << cor_error_of(b);
   b = lmc1cor_file(1);
   b.resize(0x300);
-  EXPECT_NE(error_of(b).find("an LMC1COR_1.0 correction file needs 68128 bytes, this one has 768"), std::string::npos) << error_of(b);
-  EXPECT_NE(error_of({}).find("needs"), std::string::npos);
+  EXPECT_NE(cor_error_of(b).find("an LMC1COR_1.0 correction file needs 68128 bytes, this one has 768"), std::string::npos) << cor_error_of(b);
+  EXPECT_NE(cor_error_of({}).find("needs"), std::string::npos);
 }
 
 }  // namespace

@@ -21,13 +21,13 @@
 namespace mark {
 namespace {
 
-struct Trace {
+struct PlantTrace {
   std::vector<double> t;
   std::vector<Vec2> p;
 };
 
-Trace run(const HeadModel& head, const Plant& plant, const test::Stream& stream, double tick_s = 10e-6) {
-  Trace tr;
+PlantTrace run(const HeadModel& head, const Plant& plant, const test::Stream& stream, double tick_s = 10e-6) {
+  PlantTrace tr;
   SimScannerOptions o;
   o.head = head;
   o.plant = plant;
@@ -42,7 +42,7 @@ Trace run(const HeadModel& head, const Plant& plant, const test::Stream& stream,
   return tr;
 }
 
-double first_crossing(const Trace& tr, double level) {
+double plant_first_crossing(const PlantTrace& tr, double level) {
   for (std::size_t i = 1; i < tr.t.size(); ++i)
     if (tr.p[i].x >= level) {
       const double f = (level - tr.p[i - 1].x) / (tr.p[i].x - tr.p[i - 1].x);
@@ -55,7 +55,7 @@ double first_crossing(const Trace& tr, double level) {
 double t63(const Plant& plant) {
   test::Stream s(1e-6);
   s.step_to({0.01, 0}, 2000);
-  return first_crossing(run(head_sl10(), plant, s, 1e-6), (1 - std::exp(-1.0)) * 0.01) - 0.5e-6;
+  return plant_first_crossing(run(head_sl10(), plant, s, 1e-6), (1 - std::exp(-1.0)) * 0.01) - 0.5e-6;
 }
 
 TEST(Plant, DefaultIsTheModel) { EXPECT_TRUE(Plant{}.is_model()); }
@@ -88,7 +88,7 @@ TEST(Plant, DeadTimeShortensTheRampLagAndDelaysTheStart) {
     p.dead_us = dead_us;
     test::Stream s;
     s.move({10, 0}, 1000, true);
-    const Trace tr = run(head_sl10(), p, s);
+    const PlantTrace tr = run(head_sl10(), p, s);
     const double v = 10 / s.duration_s();
     // The steady lag, after 6 ms.
     double sum = 0;
@@ -106,7 +106,7 @@ TEST(Plant, WnScaleSetsTheSecondOrderOvershoot) {
     p.wn_scale = w;
     test::Stream s(1e-6);
     s.step_to({0.01, 0}, 4000);
-    const Trace tr = run(head_sa14(), p, s, 1e-6);
+    const PlantTrace tr = run(head_sa14(), p, s, 1e-6);
     double peak = 0;
     for (const Vec2& q : tr.p) peak = std::max(peak, q.x);
     const double z = 0.7 * w;
@@ -122,7 +122,7 @@ TEST(Plant, ResonanceRingsAtItsFrequencyAndDiesByItsDamping) {
   // A 20 µm step: the servo accelerates, the mirror twists and rings after.
   test::Stream s(1e-6);
   s.step_to({0.02, 0}, 3000);
-  const Trace with = run(head_sl10(), p, s, 1e-6), without = run(head_sl10(), {}, s, 1e-6);
+  const PlantTrace with = run(head_sl10(), p, s, 1e-6), without = run(head_sl10(), {}, s, 1e-6);
   ASSERT_EQ(with.p.size(), without.p.size());
   // Upward zero crossings of the twist after the servo's first 0.1 ms.
   std::vector<double> ups;
@@ -151,7 +151,7 @@ TEST(Plant, ResonanceAddsNoLagOnARamp) {
   p.resonance_hz = 10000;
   test::Stream s;
   s.move({10, 0}, 1000, true);
-  const Trace with = run(head_sl10(), p, s), without = run(head_sl10(), {}, s);
+  const PlantTrace with = run(head_sl10(), p, s), without = run(head_sl10(), {}, s);
   // The start rings (ζ = 0.02 at 10 kHz dies by e over 0.8 ms); after 8 ms the ramp is steady
   // and the mirror follows the shaft with no lag of its own.
   for (std::size_t i = 0; i < with.p.size(); ++i) {
@@ -167,7 +167,7 @@ TEST(Plant, AccelerationLimitCapsAJump) {
     p.accel_max_mm_s2 = a_max;
     test::Stream s;
     s.step_to({20, 0}, 400);
-    const Trace tr = run(head_sl10(), p, s);
+    const PlantTrace tr = run(head_sl10(), p, s);
     double most = 0;
     for (std::size_t i = 2; i < tr.p.size(); ++i) {
       const double dt = tr.t[i] - tr.t[i - 1];
@@ -181,7 +181,7 @@ TEST(Plant, AccelerationLimitCapsAJump) {
 
 // The shaft's acceleration over each sub-step, from the probe's positions (x_i − x_{i−1} = v_i·dt
 // exactly when nothing displaces the beam).
-std::vector<double> accelerations(const Trace& tr) {
+std::vector<double> accelerations(const PlantTrace& tr) {
   std::vector<double> a;
   for (std::size_t i = 2; i < tr.p.size(); ++i) {
     const double dt = tr.t[i] - tr.t[i - 1];
@@ -199,7 +199,7 @@ TEST(Plant, BackEmfTakesTheAccelerationAwayAsTheSpeedRises) {
   p.backemf_speed_mm_s = 4000;
   test::Stream s;
   s.step_to({40, 0}, 2000);
-  const Trace tr = run(head_sl10(), p, s);
+  const PlantTrace tr = run(head_sl10(), p, s);
   std::size_t start = 1;
   while (start < tr.p.size() && tr.p[start].x == tr.p[start - 1].x) ++start;
   double t_half = NAN, most_braking = 0;
@@ -220,14 +220,14 @@ TEST(Plant, CurrentLoopKeepsTheRampLagButOvershootsAStepAndHoldsItsSlew) {
   // On a steady ramp the velocity loop has nothing left to correct: the lag is v·τ as the model's.
   test::Stream ramp;
   ramp.move({10, 0}, 1000, true);
-  const Trace with = run(head_sl10(), loop, ramp), without = run(head_sl10(), {}, ramp);
+  const PlantTrace with = run(head_sl10(), loop, ramp), without = run(head_sl10(), {}, ramp);
   for (std::size_t i = 0; i < with.p.size(); ++i)
     if (with.t[i] > 4e-3 && with.t[i] < 9e-3) {
       ASSERT_NEAR(with.p[i].x, without.p[i].x, 1e-6) << with.t[i];
     }
   // A small step: the first-order model creeps up to it; through the current loop the mirror
   // overshoots (the velocity loop's lag turns the servo into a damped higher-order loop).
-  const auto overshoot = [](const Trace& tr) {
+  const auto overshoot = [](const PlantTrace& tr) {
     double most = 0;
     for (const Vec2& p : tr.p) most = std::max(most, p.x);
     return most - 0.01;
@@ -237,7 +237,7 @@ TEST(Plant, CurrentLoopKeepsTheRampLagButOvershootsAStepAndHoldsItsSlew) {
   EXPECT_LE(overshoot(run(head_sl10(), {}, step, 1e-6)), 1e-9);
   EXPECT_GT(overshoot(run(head_sl10(), loop, step, 1e-6)), 0.01 * 0.001);
   // A jump: the acceleration changes no faster than the slew allows; without it, faster.
-  const auto jerk = [](const Trace& tr) {
+  const auto jerk = [](const PlantTrace& tr) {
     const std::vector<double> a = accelerations(tr);
     double most = 0;
     for (std::size_t i = 1; i < a.size(); ++i) most = std::max(most, std::abs(a[i] - a[i - 1]) / (tr.t[i + 2] - tr.t[i + 1]));
@@ -249,7 +249,7 @@ TEST(Plant, CurrentLoopKeepsTheRampLagButOvershootsAStepAndHoldsItsSlew) {
   slewed.jerk_max_mm_s3 = 1e12;
   EXPECT_GT(jerk(run(head_sl10(), loop, jump, 1e-6)), 2e12);
   EXPECT_LE(jerk(run(head_sl10(), slewed, jump, 1e-6)), 1e12 * 1.001);
-  const Trace slewed_jump = run(head_sl10(), slewed, jump, 1e-6);
+  const PlantTrace slewed_jump = run(head_sl10(), slewed, jump, 1e-6);
   EXPECT_NEAR(slewed_jump.p.back().x, 5, 1e-3);
 }
 
@@ -305,9 +305,9 @@ TEST(Plant, NoiseHasItsRmsAndRepeatsWithItsSeed) {
   p.noise_um = 1;
   test::Stream s;
   s.step_to({1, 0}, 20000);  // 200 ms at rest: about 1700 correlation times (τ = 0.12 ms)
-  const Trace quiet = run(head_sl10(), {}, s), a = run(head_sl10(), p, s), b = run(head_sl10(), p, s);
+  const PlantTrace quiet = run(head_sl10(), {}, s), a = run(head_sl10(), p, s), b = run(head_sl10(), p, s);
   p.seed = 2;
-  const Trace c = run(head_sl10(), p, s);
+  const PlantTrace c = run(head_sl10(), p, s);
   double sum = 0, differs = 0;
   int n = 0;
   for (std::size_t i = 0; i < a.p.size(); ++i) {

@@ -8,13 +8,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/numbers.hpp"
 #include "marker/cnc/element_distance.hpp"
 #include "path_checks.hpp"
 
 namespace mark::test {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 double spline_to_curve(const std::vector<Element>& spline, const Element& curve) {
   double worst = 0;

@@ -27,7 +27,7 @@ const std::string kNormalCxf = std::string(MARKER_SOURCE_DIR) + "/tests/fonts/da
 const std::string kDejaVu = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 const std::string kSentence = "The quick brown fox jumps over the lazy dog. 0123456789 ABCDEF";  // 62 characters
 
-std::string out_path(const std::string& name) { return cnc_out_path("cnc_machine", name); }
+std::string machine_out_path(const std::string& name) { return cnc_out_path("cnc_machine", name); }
 
 std::string rows(int n) {
   std::string t;
@@ -58,7 +58,7 @@ void expect_refused(std::vector<std::string> args, const std::vector<std::string
 }
 
 TEST(GcodeMachine, StockAndTravelReplaceTheGalvoField) {
-  const std::string file = out_path("stock.ngc");
+  const std::string file = machine_out_path("stock.ngc");
   // 40 rows at 1 mm and a 100 mm base point: far outside a 110 mm galvo field, fine on a mill.
   const nlohmann::json j = gcode_json({rows(40), "--font", kNormalCxf, "--height", "1", "--x", "100", "--y", "100",
                                        "--tool-diameter", "0.2", "--stock", "160,110", "--travel", "300,200", "-o", file});
@@ -68,7 +68,7 @@ TEST(GcodeMachine, StockAndTravelReplaceTheGalvoField) {
   EXPECT_EQ(j["stock_mm"]["x_max"].get<double>(), 160);
   EXPECT_EQ(j["travel_mm"]["x"].get<double>(), 300);
   // The same job on a stock too narrow and too low, its corner moved: refused, naming each side.
-  const std::string refused = out_path("refused.ngc");
+  const std::string refused = machine_out_path("refused.ngc");
   expect_refused({rows(40), "--font", kNormalCxf, "--height", "1", "--x", "100", "--y", "100", "--tool-diameter",
                   "0.2", "--stock", "0,40,145,60", "-o", refused},
                  {"the cuts leave the stock at the right by ", "at the top by ", "--stock is x 0.000 to 145.000 mm"},
@@ -84,7 +84,7 @@ TEST(GcodeMachine, StockAndTravelReplaceTheGalvoField) {
 }
 
 TEST(GcodeMachine, InchProgramsSayG20AndCutTheSameStrokes) {
-  const std::string mm = out_path("units_mm.ngc"), in = out_path("units_in.ngc");
+  const std::string mm = machine_out_path("units_mm.ngc"), in = machine_out_path("units_in.ngc");
   const nlohmann::json a = gcode_json({"SN 42", "--height", "4", "--units", "mm", "-o", mm});
   const nlohmann::json b = gcode_json({"SN 42", "--height", "4", "--units", "in", "-o", in});
   EXPECT_NE(slurp(mm).find("G21"), std::string::npos);
@@ -99,7 +99,7 @@ TEST(GcodeMachine, InchProgramsSayG20AndCutTheSameStrokes) {
 }
 
 TEST(GcodeMachine, FEngraveSpacingInPercentOfTheHeight) {
-  const std::string file = out_path("spacing.ngc");
+  const std::string file = machine_out_path("spacing.ngc");
   // Two 'I's of the built-in font at 10 mm: the second starts at the first's right edge plus the
   // character spacing; a space between words is the word spacing.
   const nlohmann::json tight = gcode_json({"II", "--height", "10", "--char-spacing", "0", "-o", file});
@@ -118,7 +118,7 @@ TEST(GcodeMachine, FEngraveSpacingInPercentOfTheHeight) {
 }
 
 TEST(GcodeMachine, WarnsWhenTheToolIsAsWideAsAGap) {
-  const std::string file = out_path("gap.ngc");
+  const std::string file = machine_out_path("gap.ngc");
   CliResult r;
   // 1 mm tool on 1 mm text: the grooves of neighbouring strokes run into one.
   const nlohmann::json wide = gcode_json({"HELLO", "--height", "1", "--tool-diameter", "1", "-o", file}, &r);
@@ -139,7 +139,7 @@ TEST(GcodeMachine, Rs274RunsOneTo160RowsInMmAndInch) {
   for (int n : {1, 10, 160})
     for (const char* units : {"mm", "in"}) {
       const std::string name = "rows_" + std::to_string(n) + "_" + units;
-      const std::string file = out_path(name + ".ngc");
+      const std::string file = machine_out_path(name + ".ngc");
       const nlohmann::json j = gcode_json({rows(n), "--font", kNormalCxf, "--height", "1", "--tool-diameter", "0.1",
                                            "--depth", "0.1", "--units", units, "-o", file});
       const Rs274Run run = run_rs274(slurp(file), name);
@@ -164,7 +164,7 @@ TEST(GcodeMachine, NoLiftWhereStrokesMeetAtAnyHeight) {
   std::size_t retracts_1mm = 0;
   for (double h : {1.0, 100.0}) {
     const std::string name = "joins_" + std::to_string(static_cast<int>(h));
-    const std::string file = out_path(name + ".ngc");
+    const std::string file = machine_out_path(name + ".ngc");
     const nlohmann::json j = gcode_json({kSentence, "--font", kNormalCxf, "--height", std::to_string(h), "--tool-diameter",
                                          "0.1", "--depth", "0.1", "-o", file});
     if (h == 1.0) retracts_1mm = j["retracts"].get<std::size_t>();
@@ -194,8 +194,8 @@ TEST(GcodeMachine, NoLiftWhereStrokesMeetAtAnyHeight) {
 TEST(GcodeMachine, VCarveFromTheCommandLineInMmAndInch) {
   for (const char* units : {"mm", "in"}) {
     const std::string name = std::string("vcarve_cli_") + units;
-    const std::string file = out_path(name + ".ngc"), cleanup = out_path(name + "_cleanup.ngc");
-    const std::string preview = out_path(name + ".svg");
+    const std::string file = machine_out_path(name + ".ngc"), cleanup = machine_out_path(name + "_cleanup.ngc");
+    const std::string preview = machine_out_path(name + ".svg");
     CliResult r;
     const nlohmann::json j = gcode_json({"Bo", "--font", kDejaVu, "--height", "20", "--mode", "v-carve", "--bit-angle",
                                          "60", "--tool-diameter", "6", "--max-depth", "0.8", "--flat-bottom", "1",
@@ -210,7 +210,7 @@ TEST(GcodeMachine, VCarveFromTheCommandLineInMmAndInch) {
     }
     EXPECT_NE(slurp(preview).find("<svg"), std::string::npos);
   }
-  const std::string file = out_path("vcarve_refused.ngc");
+  const std::string file = machine_out_path("vcarve_refused.ngc");
   expect_refused({"AB", "--bit-angle", "60", "-o", file}, {"--bit-angle applies to --mode v-carve only"}, file);
   expect_refused({"AB", "--mode", "v-carve", "--font", kDejaVu, "--flat-bottom", "1", "-o", file},
                  {"--flat-bottom needs --cleanup-output FILE.ngc"}, file);
@@ -220,7 +220,7 @@ TEST(GcodeMachine, VCarveFromTheCommandLineInMmAndInch) {
 TEST(GcodeMachine, ProtrusionRunsInMmAndInch) {
   for (const char* units : {"mm", "in"}) {
     const std::string name = std::string("protrusion_") + units;
-    const std::string file = out_path(name + ".ngc");
+    const std::string file = machine_out_path(name + ".ngc");
     gcode_json({"OK 7", "--height", "4", "--mode", "protrusion", "--tool-diameter", "0.5", "--gap", "1", "--units", units,
                 "-o", file});
     const Rs274Run run = run_rs274(slurp(file), name);

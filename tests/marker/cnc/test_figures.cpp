@@ -4,10 +4,10 @@
 #include <map>
 #include <numbers>
 
+#include "base/numbers.hpp"
+
 namespace mark::test {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // Letters at the paper's standard height 3, lower left corner at the origin.
 std::vector<Element> letter(char c, double& advance) {

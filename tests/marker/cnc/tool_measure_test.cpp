@@ -13,13 +13,12 @@
 #include <random>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
 #include "marker/cnc/tool/edge_scan.hpp"
 #include "tool_render.hpp"
 
 namespace mark::test {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 struct CircleCase {
   double radius_px;

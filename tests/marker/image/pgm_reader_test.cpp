@@ -11,7 +11,7 @@
 namespace mark::test {
 namespace {
 
-std::string error_of(const std::string& bytes) {
+std::string pgm_error_of(const std::string& bytes) {
   try {
     parse_pgm(bytes, "t.pgm");
   } catch (const InputError& e) {
@@ -40,17 +40,17 @@ TEST(PgmReader, ReadsBinary8And16Bit) {
 }
 
 TEST(PgmReader, NamesTheFileAndPlaceOfEachError) {
-  EXPECT_NE(error_of("P6 1 1 255\nabc").find("not a PGM"), std::string::npos);
-  EXPECT_NE(error_of("P5 0 4 255\n").find("at least 1"), std::string::npos);
-  EXPECT_NE(error_of("P5 100000 100000 255\n").find("larger than"), std::string::npos);
-  EXPECT_NE(error_of("P5 2 2 0\n").find("maximum value"), std::string::npos);
-  EXPECT_NE(error_of("P5 2 2 255\nab").find("truncated"), std::string::npos);
-  EXPECT_NE(error_of("P2 2 1 9\n3 12\n").find("exceeds"), std::string::npos);
-  EXPECT_NE(error_of("P2 2 1 9\n3 x\n").find("found 'x'"), std::string::npos);
-  EXPECT_NE(error_of("P2 2 1 9\n3").find("file ends"), std::string::npos);
-  EXPECT_NE(error_of("P5 1 1 255").find("whitespace"), std::string::npos);
-  EXPECT_NE(error_of("P5 12345678901 1 255\n").find("too large"), std::string::npos);
-  const std::string e = error_of("P5 2 2 255\nab");
+  EXPECT_NE(pgm_error_of("P6 1 1 255\nabc").find("not a PGM"), std::string::npos);
+  EXPECT_NE(pgm_error_of("P5 0 4 255\n").find("at least 1"), std::string::npos);
+  EXPECT_NE(pgm_error_of("P5 100000 100000 255\n").find("larger than"), std::string::npos);
+  EXPECT_NE(pgm_error_of("P5 2 2 0\n").find("maximum value"), std::string::npos);
+  EXPECT_NE(pgm_error_of("P5 2 2 255\nab").find("truncated"), std::string::npos);
+  EXPECT_NE(pgm_error_of("P2 2 1 9\n3 12\n").find("exceeds"), std::string::npos);
+  EXPECT_NE(pgm_error_of("P2 2 1 9\n3 x\n").find("found 'x'"), std::string::npos);
+  EXPECT_NE(pgm_error_of("P2 2 1 9\n3").find("file ends"), std::string::npos);
+  EXPECT_NE(pgm_error_of("P5 1 1 255").find("whitespace"), std::string::npos);
+  EXPECT_NE(pgm_error_of("P5 12345678901 1 255\n").find("too large"), std::string::npos);
+  const std::string e = pgm_error_of("P5 2 2 255\nab");
   EXPECT_EQ(e.rfind("t.pgm: PGM byte ", 0), 0u) << e;
 }
 

@@ -33,14 +33,14 @@ constexpr const char* kJob = R"({
   ]
 })";
 
-struct Station {
+struct PartStation {
   std::filesystem::path dir = test::fresh_store_dir("part-run");
   JobFile job;
   JobFonts fonts;
   std::unique_ptr<SerialStore> store;
   MarkContext context;
 
-  explicit Station(const std::string& text = kJob)
+  explicit PartStation(const std::string& text = kJob)
       : job(parse_job(text, "line.json")),
         fonts(job),
         store(open_store((dir / "line.serials.sqlite").string(), StoreAccess::create)) {
@@ -51,7 +51,7 @@ struct Station {
     store->start_station(context);
     test::create_counters(*store, job.used_counters());
   }
-  ~Station() {
+  ~PartStation() {
     store.reset();
     std::filesystem::remove_all(dir);
   }
@@ -86,7 +86,7 @@ double figure(const JobResult& r, const std::string& name) {
 }
 
 TEST(PartRun, ThreePartsTakeConsecutiveSerialsWithEveryObjectsPen) {
-  Station st;
+  PartStation st;
   SimScanner sim(st.sim_options());
   SimEvaluator evaluator(sim);
   PartRunner runner = st.runner(sim);
@@ -143,7 +143,7 @@ TEST(PartRun, ThreePartsTakeConsecutiveSerialsWithEveryObjectsPen) {
 // allocation, the first block after the commit.
 TEST(PartRun, TimesOrderTheAllocationTheCommitAndTheFirstSample) {
   using Clock = std::chrono::steady_clock;
-  Station st;
+  PartStation st;
   SimScanner sim(st.sim_options());
   PartRunner runner = st.runner(sim);
   std::map<PartPhase, Clock::time_point> at;
@@ -163,7 +163,7 @@ TEST(PartRun, TimesOrderTheAllocationTheCommitAndTheFirstSample) {
 }
 
 TEST(PartRun, ASecondObjectAbortedEndsThePartAndVoidsItsNumber) {
-  Station st;
+  PartStation st;
   SimScanner sim(st.sim_options());
   PartRunner runner = st.runner(sim);
   const PartResult first = runner.mark_next(SystemClock().now(), virtual_time());
@@ -204,7 +204,7 @@ TEST(PartRun, ASecondObjectAbortedEndsThePartAndVoidsItsNumber) {
 }
 
 TEST(PartRun, AFailingDeviceRecordsThePartFailed) {
-  Station st;
+  PartStation st;
   SimScannerOptions o = st.sim_options();
   o.fault_at = 300;
   SimScanner sim(o);
@@ -230,7 +230,7 @@ TEST(PartRun, AFailingDeviceRecordsThePartFailed) {
 TEST(PartRun, ARefusedPartConsumesNothing) {
   std::string text = kJob;
   text.replace(text.find("\"x_mm\": -20, \"y_mm\": 3"), 22, "\"x_mm\": 45, \"y_mm\": 3");
-  Station st(text);
+  PartStation st(text);
   SimScanner sim(st.sim_options());
   PartRunner runner = st.runner(sim);
   try {
@@ -247,7 +247,7 @@ TEST(PartRun, ARefusedPartConsumesNothing) {
 }
 
 TEST(PartRun, ARemarkLinksItsRowAndConsumesNoNumber) {
-  Station st;
+  PartStation st;
   SimScanner sim(st.sim_options());
   PartRunner runner = st.runner(sim);
   const PartResult first = runner.mark_next(SystemClock().now(), virtual_time());
@@ -267,7 +267,7 @@ TEST(PartRun, ARemarkLinksItsRowAndConsumesNoNumber) {
 }
 
 TEST(PartRun, ABoardGetsEachObjectsPen) {
-  Station st;
+  PartStation st;
   test::RecordingCommandDevice board;
   PartRunner runner = st.runner(board);
   const PartResult p = runner.mark_next(SystemClock().now(), virtual_time());
@@ -284,7 +284,7 @@ TEST(PartRun, ABoardGetsEachObjectsPen) {
 TEST(PartRun, PensOnASampleDeviceShareItsClock) {
   std::string text = kJob;
   text.replace(text.find("\"power_pct\": 50"), 15, "\"power_pct\": 50, \"tick_us\": 5");
-  Station st(text);
+  PartStation st(text);
   SimScanner sim(st.sim_options());
   try {
     st.runner(sim);

@@ -6,15 +6,14 @@
 #include <date/date.h>
 
 #include "marker/vars/counter.hpp"
+#include "tests/marker/vars/at_utc.hpp"
 
 namespace mark {
 namespace {
 
 using namespace std::chrono;
 
-SysTime at_utc(int y, unsigned m, unsigned d, int hh, int mm) {
-  return SysTime{date::sys_days{date::year{y} / m / d}} + hours{hh} + minutes{mm};
-}
+using test::at_utc;
 
 CounterSpec counter(ResetRule reset, const char* zone = "UTC") {
   CounterSpec s;

@@ -130,17 +130,19 @@ PgResult PgConn::run(const std::string& sql, PgParams params) {
 PgResult PgConn::run(const std::string& sql, const std::vector<std::optional<std::string>>& params) {
   send(sql, params, false);
   PgResult last;
-  PGresult* error = nullptr;
+  // Owned here until fail() takes it: the next read can throw (the connection lost after the
+  // error came in), and a raw pointer held across it leaked (found by the ASan run of the tests).
+  PgResult error;
   while (PGresult* r = next_result()) {
     const ExecStatusType st = PQresultStatus(r);
     if (st != PGRES_COMMAND_OK && st != PGRES_TUPLES_OK) {
-      if (!error) error = r;
+      if (!error) error = PgResult(r);
       else PQclear(r);
       continue;  // every result is read before the connection takes another command
     }
     last = PgResult(r);
   }
-  if (error || PQstatus(c_) != CONNECTION_OK) fail(error);
+  if (error || PQstatus(c_) != CONNECTION_OK) fail(error.release());
   return last;
 }
 
@@ -149,7 +151,7 @@ void PgConn::stream(const std::string& sql, const std::vector<std::optional<std:
   send(sql, params, true);
   bool wanted = true;
   std::exception_ptr failure;
-  PGresult* error = nullptr;
+  PgResult error;  // owned across the reads that can throw (run() above)
   const auto stop = [&] {
     // The rest is not wanted: ask the server to stop sending it (its "canceled" error is ours).
     wanted = false;
@@ -172,12 +174,12 @@ void PgConn::stream(const std::string& sql, const std::vector<std::optional<std:
     } else if (st == PGRES_SINGLE_TUPLE || st == PGRES_TUPLES_OK || !wanted) {
       PQclear(r);
     } else if (!error) {
-      error = r;
+      error = PgResult(r);
     } else {
       PQclear(r);
     }
   }
-  if (error || PQstatus(c_) != CONNECTION_OK) fail(error);
+  if (error || PQstatus(c_) != CONNECTION_OK) fail(error.release());
   if (failure) std::rethrow_exception(failure);
 }
 

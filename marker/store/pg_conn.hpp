@@ -30,6 +30,12 @@ class PgResult {
   std::string text(int row, int c) const { return PQgetvalue(r_, row, c); }
   std::int64_t i64(int row, int c) const { return std::stoll(PQgetvalue(r_, row, c)); }
   PGresult* get() const { return r_; }
+  PGresult* release() {
+    PGresult* r = r_;
+    r_ = nullptr;
+    return r;
+  }
+  explicit operator bool() const { return r_ != nullptr; }
 
  private:
   PGresult* r_;

@@ -95,7 +95,7 @@ void SimScanner::start_job() {
   lit_.runs.clear();
   lit_stale_ = false;
   trace_.clear();
-  dose_scale_ = laser_.power_pct / 100;
+  dose_scale_ = options_.light_power ? 1.0 : laser_.power_pct / 100;
   pulses_.begin(laser_.frequency_khz, options_.head.spot_diameter_um);
   if (noise_.active()) noise_.start(options_.plant.seed);  // every job draws the same noise
   heat_.reset();  // the cooling between jobs is not simulated: every job starts cold

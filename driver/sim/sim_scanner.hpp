@@ -62,6 +62,10 @@ struct SimScannerOptions {
   bool record_lit_paths = true;     // keep the lit beam path (for quality figures)
   double lit_path_spacing_mm = 0.004;  // lit points kept about this far apart (≤ 1 per sub-step)
   bool trace = false;               // keep one SimTraceRow per sample (marker mark --trace)
+  // The samples' power is the light's share of the source's full power (a board's output:
+  // MarkCurrent / 4095), not a share of the pen's power, so the pen's power is not applied a
+  // second time. The nominal dose (quality) is the pen's either way.
+  bool light_power = false;
   // Fault injection (tests, `marker mark --inject fault@N`): the device reports a fault of its
   // own at this sample of a job and halts.
   std::uint64_t fault_at = UINT64_MAX;

@@ -8,6 +8,8 @@ EmulatedLmcDevice::EmulatedLmcDevice(SimScannerOptions scanner, lmc::LmcOptions 
                                      bool virtual_time) {
   // The board's clock is the scanner's tick.
   scanner.tick_s = 10e-6;
+  // The board's output carries the light's power (its MarkCurrent), the pen's power in it.
+  scanner.light_power = true;
   scanner_ = std::make_unique<SimScanner>(std::move(scanner));
   auto link = lmc::open_lmc_link(spec, options, lmc::EmulatedSetup{virtual_time, scanner_.get()});
   link_ = static_cast<lmc::EmulatedLink*>(link.get());

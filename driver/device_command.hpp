@@ -8,6 +8,12 @@
 // the previous one ended; the first starts where begin_job left the mirrors (the field centre).
 // A speed of 0 means the current pen's speed for that kind of move. The pen's delays (laser
 // on/off, jump, mark, polygon) are applied by the device itself, not by extra commands.
+//
+// A timed move (duration_s > 0) takes that long on the device's clock: the device picks the
+// speed that makes it so from the distance it actually travels (its own units, rounded). The host
+// sends these when it has planned the motion itself (look-ahead, feed-forward): the 10 µs locus
+// cut into short straight moves, each as long in time as the samples it replaces, so the board's
+// constant-speed moves retrace the planned speeds (marker/job/timed_moves.hpp).
 #include <cstdint>
 
 namespace mark {
@@ -31,6 +37,9 @@ struct DeviceCommand {
   double sweep_rad = 0;        // arc sweep
   double speed_mm_s = 0;       // jump, mark, arc; 0 = the pen's
   double dwell_s = 0;          // dwell
+  double duration_s = 0;       // jump, mark: a timed move (above), speed_mm_s its mean speed
+  double power_fraction = 1;   // a timed mark: its share of the pen's power (look-ahead's
+                               // power ∝ speed, so the dose per mm holds where it slows)
 
   static DeviceCommand select_pen(std::uint16_t index) {
     DeviceCommand c;
@@ -48,6 +57,14 @@ struct DeviceCommand {
     DeviceCommand c;
     c.op = DeviceOp::mark;
     c.x_mm = x, c.y_mm = y, c.speed_mm_s = speed;
+    return c;
+  }
+  // A move of `duration_s` with the laser on (mark) or off (jump), at its mean speed.
+  static DeviceCommand timed_move(bool laser_on, double x, double y, double speed, double duration_s,
+                                  double power_fraction = 1) {
+    DeviceCommand c = laser_on ? mark_to(x, y, speed) : jump_to(x, y, speed);
+    c.duration_s = duration_s;
+    c.power_fraction = power_fraction;
     return c;
   }
   static DeviceCommand arc_to(double x, double y, double cx, double cy, double sweep,

@@ -99,6 +99,12 @@ void refuse_speed(double mm_s, const FieldUnits& u, std::string_view what) {
   refuse(what, buf);
 }
 
+std::uint16_t timed_speed_word(double length, double ticks, const FieldUnits& u, std::string_view what) {
+  const double word = std::ceil(100.0 * length / ticks);
+  if (!(word < 65536.0)) refuse_speed(length / (ticks * kTick_s) / u.units_per_mm(), u, what);
+  return static_cast<std::uint16_t>(std::max(1.0, word));
+}
+
 std::array<std::uint16_t, 2> encode_signed_us(double seconds, std::string_view what) {
   const double us = std::round(seconds * 1e6);
   if (!std::isfinite(seconds) || std::abs(us) > 65535)

@@ -323,6 +323,13 @@ inline std::uint16_t encode_speed(double mm_s, const FieldUnits& u, std::string_
   if (!(units_per_ms >= 1.0 && units_per_ms < 65536.0)) refuse_speed(mm_s, u, what);
   return static_cast<std::uint16_t>(units_per_ms);  // truncated, as meerk40t
 }
+// The speed word for a timed move (device_command.hpp): `length` units in `ticks` ticks. The
+// board takes ⌈length / (word / 100)⌉ ticks (list_executor.hpp), so this is the smallest word
+// whose move is no longer than `ticks`: exactly `ticks` when length ≥ ticks·(ticks − 1) / 100
+// units, otherwise a word's step (1/100 unit per tick) is too coarse and the move is up to one
+// word's share shorter. At least 1 (a slow crawl takes longer); EncodeError naming `what`
+// above 0xFFFF.
+std::uint16_t timed_speed_word(double length, double ticks, const FieldUnits& u, std::string_view what);
 std::array<std::uint16_t, 2> encode_signed_us(double seconds, std::string_view what = "delay");
 std::uint16_t encode_time_10us(double seconds, std::uint32_t max = 0xFFFF,
                                std::string_view what = "time");

@@ -162,6 +162,31 @@ void JobEncoder::end_run() {
   if (pen_ && pen_->mark_delay_10us) push(word(Op::DelayTime, pen_->mark_delay_10us), pen_->mark_delay_10us * 1e-5);
 }
 
+inline void JobEncoder::push_move(Op op, std::array<std::uint16_t, 2> to, std::uint16_t v, bool corner) {
+  const double length = segment_length(at_, to);
+  // The estimate: length / speed (units per ms), the reciprocal cached per speed word; a
+  // JumpTo is followed by the board's jump delay.
+  if (v != inverse_for_) [[unlikely]] {
+    inverse_for_ = v;
+    inverse_speed_ = 1.0 / (double(v) * 1000.0);
+  }
+  double t = length * inverse_speed_;
+  if (op == Op::JumpTo) t += jump_delay_s_;
+  const std::array<std::int32_t, 2> d{std::int32_t(to[0]) - at_[0], std::int32_t(to[1]) - at_[1]};
+  double unverified = 0;
+  if (corner && polygon_worst_s_ > 0 && last_length_ > 0) [[unlikely]] {
+    // PolygonDelay × (1 − cos φ), as the board's variable polygon delay (list_executor.hpp).
+    const double cos_phi = double(d[0] * last_d_[0] + d[1] * last_d_[1]) / (length * last_length_);
+    t += polygon_s_ * (1 - cos_phi);
+    unverified = (polygon_worst_s_ - polygon_s_) * (1 - cos_phi);
+  }
+  last_d_ = d;
+  last_length_ = length;
+  push(word(op, to[0], to[1], 0, distance_word(length)), t, unverified);
+  ++figures_.moves;
+  at_ = to;
+}
+
 // Marks and jumps: nearly every command of a job, so this is the encoder's hot loop: one loop
 // over the span with the move inline (add() → move() per command took 11 ns a command, this
 // 8 ns: build/bench/bench_lmc, BM_LmcListEncoder40Rows). Parameter words go out of line: a
@@ -174,6 +199,10 @@ std::size_t JobEncoder::add_moves(std::span<const DeviceCommand> cs, std::uint64
     Op op;
     std::uint16_t v;
     bool corner = false;  // a MarkTo after a MarkTo: the board's polygon delay
+    if (c.duration_s > 0) [[unlikely]] {
+      add_timed(c);
+      continue;
+    }
     if (c.op == DeviceOp::mark && (c.speed_mm_s > 0 || pen_)) {
       op = Op::MarkTo;
       v = c.speed_mm_s > 0 ? encode_speed(c.speed_mm_s, units_, "mark speed") : pen_->mark_speed;
@@ -200,30 +229,67 @@ std::size_t JobEncoder::add_moves(std::span<const DeviceCommand> cs, std::uint64
     }
     const auto to = units_.point(c.x_mm, c.y_mm);
     if (to[0] == at_[0] && to[1] == at_[1]) continue;  // nowhere to go (meerk40t drops these too)
-    const double length = segment_length(at_, to);
-    // The estimate: length / speed (units per ms), the reciprocal cached per speed word; a
-    // JumpTo is followed by the board's jump delay.
-    if (v != inverse_for_) [[unlikely]] {
-      inverse_for_ = v;
-      inverse_speed_ = 1.0 / (double(v) * 1000.0);
-    }
-    double t = length * inverse_speed_;
-    if (op == Op::JumpTo) t += jump_delay_s_;
-    const std::array<std::int32_t, 2> d{std::int32_t(to[0]) - at_[0], std::int32_t(to[1]) - at_[1]};
-    double unverified = 0;
-    if (corner && polygon_worst_s_ > 0 && last_length_ > 0) [[unlikely]] {
-      // PolygonDelay × (1 − cos φ), as the board's variable polygon delay (list_executor.hpp).
-      const double cos_phi = double(d[0] * last_d_[0] + d[1] * last_d_[1]) / (length * last_length_);
-      t += polygon_s_ * (1 - cos_phi);
-      unverified = (polygon_worst_s_ - polygon_s_) * (1 - cos_phi);
-    }
-    last_d_ = d;
-    last_length_ = length;
-    push(word(op, to[0], to[1], 0, distance_word(length)), t, unverified);
-    ++figures_.moves;
-    at_ = to;
+    push_move(op, to, v, corner);
   }
   return i;
+}
+
+// A timed move (device_command.hpp): its speed word from the distance in units the board will
+// travel, so the move takes the host's ticks; one that goes nowhere in units still takes its
+// time, held like a dwell (dropping it would pull everything after it earlier).
+void JobEncoder::add_timed(const DeviceCommand& c) {
+  const auto to = units_.point(c.x_mm, c.y_mm);
+  const double ticks = std::max(1.0, std::round(c.duration_s / kTick_s));
+  const bool lit = c.op == DeviceOp::mark;
+  if (lit && pen_) set_power(c.power_fraction);
+  if (to[0] == at_[0] && to[1] == at_[1]) {
+    hold(ticks, lit);
+    return;
+  }
+  const std::uint16_t v =
+      timed_speed_word(segment_length(at_, to), ticks, units_, lit ? "mark speed" : "blanking line speed");
+  bool corner = false;
+  if (lit) {
+    if (mark_speed_ != v) send_mark_speed(v);
+    corner = in_run_;
+    in_run_ = true;
+  } else {
+    in_run_ = false;
+    set_jump_speed(v);
+    set_jump_delay({0, 0});
+  }
+  push_move(lit ? Op::MarkTo : Op::JumpTo, to, v, corner);
+}
+
+void JobEncoder::set_power(double fraction) {
+  const auto send = [this](std::optional<std::uint16_t>& have, std::uint16_t w, Op op) {
+    if (have == w) return;
+    push(word(op, w));
+    ++figures_.parameter_commands;
+    have = w;
+  };
+  const double f = std::clamp(fraction, 0.0, 1.0);
+  switch (pen_->source) {
+    case LaserSource::fiber:
+    case LaserSource::mopa:
+      send(power_, static_cast<std::uint16_t>(std::lround(pen_->power * f)), Op::MarkCurrent);
+      break;
+    case LaserSource::co2:
+    case LaserSource::uv:
+      send(power_ratio_, static_cast<std::uint16_t>(std::lround(pen_->power_ratio * f)), Op::MarkPowerRatio);
+      break;
+  }
+}
+
+void JobEncoder::hold(double ticks, bool laser) {
+  in_run_ = false;
+  const Op op = laser ? Op::LaserOnPoint : Op::DelayTime;
+  const double most = laser ? kMaxDwellTicks : kMaxDelayTicks;
+  while (ticks > 0) {
+    const double n = std::min(ticks, most);
+    push(word(op, static_cast<std::uint16_t>(n)), n * 1e-5);
+    ticks -= n;
+  }
 }
 
 void JobEncoder::send_mark_speed(std::uint16_t w) {
@@ -243,18 +309,9 @@ void JobEncoder::add(const DeviceCommand& c, std::uint64_t index) {
     case DeviceOp::jump:
       throw EncodeError("lmc: command " + std::to_string(index) +
                         " uses the pen's speed before any pen was applied");
-    case DeviceOp::dwell: {
-      in_run_ = false;
-      double ticks = std::round(c.dwell_s * 1e5);
-      const Op op = c.laser ? Op::LaserOnPoint : Op::DelayTime;
-      const double most = c.laser ? kMaxDwellTicks : kMaxDelayTicks;
-      while (ticks > 0) {
-        const double n = std::min(ticks, most);
-        push(word(op, static_cast<std::uint16_t>(n)), n * 1e-5);
-        ticks -= n;
-      }
+    case DeviceOp::dwell:
+      hold(std::round(c.dwell_s * 1e5), c.laser);
       return;
-    }
     case DeviceOp::arc:
       throw EncodeError("lmc: command " + std::to_string(index) +
                         " is an arc; the board takes no arcs (describe().arcs = false): chord it");

@@ -23,6 +23,12 @@
 //            a straight constant-speed move with the laser gated off — exactly what a blanking
 //            line is — as long as no jump delay stops the mirrors halfway through the run-in.
 //            The laser-off delay still runs into it, which is what makes a run-out work.
+// - timed move (duration_s > 0, look-ahead and feed-forward): lit, the pen's power word scaled
+//            by its power fraction when that changes the word (MarkCurrent; MarkPowerRatio for
+//            co2, uv), MarkSpeed; dark, JumpSpeed
+//            with JumpDelay 0 (dark), the word that makes the move take its duration in ticks,
+//            then MarkTo / JumpTo; one whose end rounds to where the mirrors are becomes a hold
+//            of that many ticks (LaserOnPoint / DelayTime).
 // - dwell:   laser off: DelayTime (10 µs units, split at 0xFFFF); laser on: LaserOnPoint (split
 //            at 60000, the documented limit).
 // - arc:     refused (describe() says arcs = false: the job chords arcs first).
@@ -135,6 +141,14 @@ class JobEncoder {
   // Encodes the leading marks and jumps of `cs` (up to the first pen, dwell or arc, or a move
   // at the pen's speed with no pen applied); returns how many.
   std::size_t add_moves(std::span<const DeviceCommand> cs, std::uint64_t first_index);
+  void add_timed(const DeviceCommand& c);
+  // The move word to `to` at speed word `v`, with its share of the estimate (`corner`: after a
+  // MarkTo of the same run, the board's polygon delay).
+  void push_move(Op op, std::array<std::uint16_t, 2> to, std::uint16_t v, bool corner);
+  // `ticks` with the mirrors still, the laser on (LaserOnPoint) or off (DelayTime).
+  void hold(double ticks, bool laser);
+  // The pen's power word scaled by `fraction` (0..1), sent if the board has another.
+  void set_power(double fraction);
 
   FieldUnits units_;
   PacketSink sink_;

@@ -10,6 +10,7 @@
 
 #include "base/error.hpp"
 #include "marker/geometry/flatten.hpp"
+#include "marker/job/timed_moves.hpp"
 
 namespace mark {
 namespace {
@@ -67,13 +68,7 @@ class Builder {
     refuse(x, y);
   }
   [[noreturn, gnu::noinline, gnu::cold]] void refuse(double x, double y) const {
-    const double half = device_.field_mm / 2;
-    char msg[240];
-    std::snprintf(msg, sizeof msg,
-                  "%s: command %zu goes to (%.4f, %.4f) mm, outside the field ±%.3f mm; nothing "
-                  "was sent",
-                  device_.name.c_str(), out_.commands.size(), x, y, half);
-    throw DeviceFaultError({FaultCategory::out_of_field, msg, out_.commands.size()});
+    refuse_outside_field(device_, x, y, out_.commands.size());
   }
 
   const DeviceDescription& device_;
@@ -84,12 +79,20 @@ class Builder {
 
 }  // namespace
 
+void refuse_outside_field(const DeviceDescription& device, double x, double y, std::size_t command) {
+  char msg[240];
+  std::snprintf(msg, sizeof msg,
+                "%s: command %zu goes to (%.4f, %.4f) mm, outside the field ±%.3f mm; nothing "
+                "was sent",
+                device.name.c_str(), command, x, y, device.field_mm / 2);
+  throw DeviceFaultError({FaultCategory::out_of_field, msg, command});
+}
+
 Plan plan_for_device(const Figure& figure, const Pen& pen, StrokeOrder order) {
-  // Look-ahead and feed-forward shape the 10 µs samples themselves; a board with its own clock
-  // ramps its own speeds and drives its servo itself.
-  if (pen.lookahead || pen.feed_forward())
-    throw InputError("look-ahead and feed-forward need a sample-level device: a command-level "
-                     "board runs its own clock and speed ramps");
+  // Look-ahead and feed-forward shape the samples themselves: the board gets them as timed
+  // moves (timed_moves.hpp), from the plan a sample-level device would get. The board starts
+  // at the field centre, the locus's home.
+  if (timed_on_board(pen)) return plan_figure(figure, pen, order);
   Pen p = pen;
   if (p.corner == CornerStrategy::delays) p.corner = CornerStrategy::none;  // the board waits
   p.whole_tick_speeds = false;  // the board's own ticks; one speed word per pen
@@ -103,7 +106,8 @@ DevicePen device_pen(const Pen& pen, const LaserSettings& laser, DeviceLevel lev
   d.mark_speed_mm_s = pen.mark_speed_mm_s;
   d.jump_speed_mm_s = pen.jump_speed_mm_s;
   d.laser = laser;
-  if (level == DeviceLevel::samples) return d;  // the host's delay line and dwells do it
+  // The host's delay line and dwells do it.
+  if (level == DeviceLevel::samples || timed_on_board(pen)) return d;
   d.laser_on_delay_s = pen.laser_on_delay_s;
   d.laser_off_delay_s = pen.laser_off_delay_s;
   if (pen.corner == CornerStrategy::delays) {
@@ -189,6 +193,7 @@ void convert_program(const Plan& plan, const DeviceDescription& device, const Pr
 
 DeviceProgram device_program(const Plan& plan, const LaserSettings& laser,
                              const DeviceDescription& device) {
+  if (timed_on_board(plan.pen)) return timed_program(plan, laser, device);
   DeviceProgram out;
   out.pen = device_pen(plan.pen, laser, DeviceLevel::commands);
   // Room for every chord up front: a reallocation of tens of thousands of commands costs more

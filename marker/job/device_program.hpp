@@ -10,6 +10,8 @@
 // delays with zero jump / mark / polygon delays, so nothing waits between a run-in and its
 // stroke. Lit arcs and ellipse arcs become chords within the device's chord tolerance unless the
 // device takes circular arcs.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -27,12 +29,32 @@ struct DeviceProgram {
   std::size_t chords = 0;     // lit arcs flattened into this many straight marks
 };
 
+// Whether a command-level device gets the host's own sample-level plan as timed moves
+// (timed_moves.hpp) instead of the plan's elements: a pen that plans speeds (look-ahead,
+// feed-forward) needs the speeds and the pre-compensated path only the host's locus has.
+inline bool timed_on_board(const Pen& pen) { return pen.lookahead || pen.feed_forward(); }
+
 // The plan a command-level device should receive for this figure and pen: the same strokes and
-// blanking lines, without the host's delay dwells.
+// blanking lines, without the host's delay dwells; for a timed pen, the host's plan itself.
 Plan plan_for_device(const Figure& figure, const Pen& pen, StrokeOrder order);
 
+// Refuses a point of device command `command` outside the device's field: DeviceFaultError
+// (out_of_field) naming the point, the field and the command.
+inline void check_in_field(const DeviceDescription& device, double x, double y, std::size_t command);
+[[noreturn]] void refuse_outside_field(const DeviceDescription& device, double x, double y,
+                                       std::size_t command);
+inline void check_in_field(const DeviceDescription& device, double x, double y, std::size_t command) {
+  // |v| ≤ half is false for NaN; infinities are above half, clamped so that an unbounded field
+  // refuses them too.
+  const double half = std::min(device.field_mm / 2, std::numeric_limits<double>::max());
+  if (std::abs(x) <= half && std::abs(y) <= half) [[likely]]
+    return;
+  refuse_outside_field(device, x, y, command);
+}
+
 // The device pen for a host pen and its laser settings, at a device level: sample-level devices
-// get the laser settings only (the host applies delays), command-level devices the delays too.
+// get the laser settings only (the host applies delays), command-level devices the delays too
+// (but for a timed pen, whose locus has them).
 DevicePen device_pen(const Pen& pen, const LaserSettings& laser, DeviceLevel level);
 
 // Converts the plan. Every end point (and every chord point) is checked against the device's

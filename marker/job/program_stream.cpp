@@ -4,6 +4,8 @@
 #include <limits>
 #include <system_error>
 
+#include "marker/job/timed_moves.hpp"
+
 namespace mark {
 namespace {
 
@@ -27,6 +29,13 @@ void ProgramStream::convert(const std::function<void(std::size_t)>& progress, st
 ProgramStream::ProgramStream(const Plan& plan, const LaserSettings& laser,
                              const DeviceDescription& device, StreamMode mode)
     : plan_(plan), device_(device) {
+  if (timed_on_board(plan.pen)) {
+    // The locus as timed moves: made whole here (a field refusal before the job begins), on
+    // this thread — it runs the locus generator, which is the sample-level path's producer too.
+    program_ = timed_program(plan, laser, device);
+    publish_whole();
+    return;
+  }
   program_.pen = device_pen(plan.pen, laser, DeviceLevel::commands);
   const std::size_t size = plan.commands.size();
   const bool worth_a_thread =
@@ -75,6 +84,10 @@ void ProgramStream::convert_here() {
   count_ = count_program(plan_, device_);
   program_.commands.reserve(count_.commands + 1);
   convert({}, kNoIndex);
+  publish_whole();
+}
+
+void ProgramStream::publish_whole() {
   data_ = program_.commands.data();
   converted_.store(program_.commands.size(), std::memory_order_relaxed);
   ended_.store(true, std::memory_order_relaxed);

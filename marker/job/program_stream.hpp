@@ -10,7 +10,7 @@
 // plan is converted whole while the constructor waits, and a point outside the field throws
 // from the constructor, before begin_job, as device_program does. Small plans are converted
 // whole on the calling thread: a thread costs more than they do (a start and join is ~40 µs
-// here).
+// here). A timed pen's program (timed_moves.hpp) is made whole in the constructor.
 #include <atomic>
 #include <cstddef>
 #include <exception>
@@ -55,6 +55,7 @@ class ProgramStream {
  private:
   enum Go : int { wait, stream, whole, quit };
   void convert_here();
+  void publish_whole();  // program_ is complete: hand all of it out
   void work(std::size_t half);
   void convert(const std::function<void(std::size_t)>& progress, std::size_t every);
   void start(Go go) { go_.store(go, std::memory_order_release); }

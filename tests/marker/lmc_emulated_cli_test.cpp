@@ -91,6 +91,57 @@ TEST(LmcEmulatedCli, SourcesTakeOnlyWhatTheyCan) {
   }
 }
 
+TEST(LmcEmulatedCli, ThePensPowerIsCountedOnceInTheDose) {
+  // The board's output carries the light's power (the pen's 20 % in its MarkCurrent): the
+  // scanner must not scale it by the pen's power again, or every job below 100 % looks
+  // under-dosed ("poor", 20 % of the pen's energy per mm). The share is the same at any power.
+  double share[2] = {};
+  for (int k = 0; k < 2; ++k) {
+    const auto j = run_json({"mark", "SN 1", "--height", "2", "--power", k ? "100" : "20", "--device",
+                             "lmc-emulated", "--virtual-time", "--json"});
+    share[k] = j["quality"]["dose_per_mm_fraction"].get<double>();
+  }
+  EXPECT_GT(share[1], 0.8);
+  EXPECT_NEAR(share[0], share[1], 0.01 * share[1]);
+}
+
+// The robust feed-forward pen of `cps --short` (SL10, the plant set's "high" row, 1410 mm/s),
+// through the board as timed moves and directly on the simulator, on two plants.
+TEST(LmcEmulatedCli, FeedForwardRunsOnTheBoardAsTimedMoves) {
+  const std::vector<std::string> pen{
+      "--head", "SL10", "--corner", "none", "--speed", "1410", "--jump-speed", "9600", "--tick", "10",
+      "--laser-on-delay-us", "0", "--laser-off-delay-us", "0", "--lookahead", "--accel", "2200000",
+      "--jump-accel", "18612000", "--curve-accel", "2200000", "--accel-limit", "44000000", "--junction-dv", "100",
+      "--laser-switch-speed", "0", "--min-lit-speed", "141", "--ff-lag-us", "120", "--source", "fiber",
+      "--frequency", "45"};
+  for (const char* plant : {"", "dead_us=10"}) {
+    auto on = [&](const char* device) {
+      std::vector<std::string> a{"mark", "ABCDEFGHIJKLMNOPQRSTUVWXYZ", "--height", "1", "--align", "center",
+                                 "--virtual-time", "--device", device, "--json"};
+      a.insert(a.end(), pen.begin(), pen.end());
+      if (*plant) a.insert(a.end(), {"--plant", plant});
+      return run_json(a);
+    };
+    const auto direct = on("sim");
+    const auto board = on("lmc-emulated");
+    ASSERT_EQ(board["outcome"], "done") << plant;
+    EXPECT_EQ(board["feed_forward"], true);
+    EXPECT_EQ(direct["quality"]["class"], "high") << plant;
+    EXPECT_EQ(board["quality"]["class"], "high") << plant << board["quality"];
+    // The path: the direct one's, plus the cut's 2 µm and a 16-bit field unit (1.7 µm).
+    EXPECT_LE(board["quality"]["max_deviation_um"].get<double>(),
+              direct["quality"]["max_deviation_um"].get<double>() + 2 + 1.7)
+        << plant;
+    EXPECT_GE(board["quality"]["coverage_fraction"].get<double>(), 0.99) << plant;
+    // The time: the locus's, tick for tick, plus the board's 8 ms opening of the oscillator.
+    EXPECT_NEAR(board["device_figures"]["scanner_device_time_s"].get<double>(),
+                direct["mark_time_s"].get<double>() + 0.008, 0.0005)
+        << plant;
+    // Many short moves: the speed changes along every stroke.
+    EXPECT_GT(board["commands"].get<double>(), 20 * direct["commands"].get<double>()) << plant;
+  }
+}
+
 // A correction table for a 70 mm lens, legacy format, every delta 0.
 std::string cor_file_for(double lens_mm) {
   const auto path = test::fresh_temp_file("lmc_emulated_cli_test", "lens.cor");

@@ -4,8 +4,8 @@
 # executables too, so CI compiles the engine once for both the fuzzers and this run. Any report
 # fails the run (-fno-sanitize-recover=all; ASan aborts on the first error).
 #   scripts/asan.sh [GTEST_FILTER]
-# MARKER_ASAN_SUITES picks the test executables (default: all four). marker_tests runs in
-# MARKER_ASAN_SHARDS processes at once (gtest sharding, default 2) and, without a filter, leaves
+# MARKER_ASAN_SUITES picks the test executables (default: all four). Each runs in
+# MARKER_ASAN_SHARDS processes at once (gtest sharding, default 2). marker_tests, without a filter, leaves
 # out the tests listed in tests/asan-slow-tests.txt: the ones that take 5 s or more each under
 # ASan (end-to-end command lines, decoders at every size, picture fits), 15 % of the suite's tests
 # and about 85 % of its ASan time; the Release ctest runs them. MARKER_ASAN_ALL=1 runs them too
@@ -34,12 +34,9 @@ slow_filter() {
 }
 
 run_suite() {
-  local suite=$1 f=$filter shards=1 status=0 t0
+  local suite=$1 f=$filter shards=${MARKER_ASAN_SHARDS:-2} status=0 t0
   t0=$(date +%s)
-  if [ "$suite" = marker_tests ]; then
-    shards=${MARKER_ASAN_SHARDS:-2}
-    if [ "$f" = "*" ] && [ -z "${MARKER_ASAN_ALL:-}" ]; then f=$(slow_filter); fi
-  fi
+  if [ "$suite" = marker_tests ] && [ "$f" = "*" ] && [ -z "${MARKER_ASAN_ALL:-}" ]; then f=$(slow_filter); fi
   echo "asan: $suite ($shards shard(s))"
   local pids=() i
   for ((i = 0; i < shards; ++i)); do

@@ -42,6 +42,12 @@ DeviceReport EmulatedLmcDevice::end_job() {
   for (const auto& [key, value] : s.figures)
     if (key.starts_with("pulse")) r.figures.emplace_back(key, value);
   r.figures.emplace_back("scanner_device_time_s", s.device_time_s);
+  // What a real board does not tell the host: how often it ran out of list data mid-job and
+  // held the mirrors, gate closed (a mark run broken there, a timed move's pre-compensation
+  // thrown off).
+  const lmc::ExecutorFigures& x = link_->board().state().executor;
+  r.figures.emplace_back("board_underrun_events", static_cast<double>(x.underrun_events));
+  r.figures.emplace_back("board_underrun_s", static_cast<double>(x.underrun_ticks) * 10e-6);
   return r;
 }
 

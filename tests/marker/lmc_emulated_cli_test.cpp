@@ -137,8 +137,9 @@ TEST(LmcEmulatedCli, FeedForwardRunsOnTheBoardAsTimedMoves) {
     EXPECT_NEAR(board["device_figures"]["scanner_device_time_s"].get<double>(),
                 direct["mark_time_s"].get<double>() + 0.008, 0.0005)
         << plant;
-    // Many short moves: the speed changes along every stroke.
+    // Many short moves: the speed changes along every stroke. The board never waited for them.
     EXPECT_GT(board["commands"].get<double>(), 20 * direct["commands"].get<double>()) << plant;
+    EXPECT_EQ(board["device_figures"]["board_underrun_events"].get<double>(), 0) << plant;
   }
 }
 

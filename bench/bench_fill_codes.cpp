@@ -90,7 +90,7 @@ void BM_Verify8mmDataMatrix(benchmark::State& state) {
   const SimulatedJob marked = simulate_job(job);
   for (auto _ : state) {
     const CodeVerification v =
-        check_code(marked.job.codes.front(), job.codes.front().spec, marked.scanner->dose(), job.verify);
+        check_code(marked.job.codes.front(), job.codes.front().spec, marked.scanner->picture_dose(), job.verify);
     if (!v.data_match) state.SkipWithError("the 8 mm code did not read");
     benchmark::DoNotOptimize(v);
   }

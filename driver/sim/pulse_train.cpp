@@ -4,14 +4,15 @@
 
 namespace mark {
 
-void PulseTrain::begin(double frequency_khz, double spot_diameter_um) {
+void PulseTrain::begin(double frequency_khz, double spot_diameter_um, DoseRaster* raster) {
   *this = PulseTrain{};
+  raster_ = raster;
   frequency_khz_ = frequency_khz;
   spot_um_ = spot_diameter_um;
   period_s_ = 1 / (frequency_khz * 1e3);
 }
 
-void PulseTrain::step(Vec2 p0, Vec2 p1, double dt, bool gate) {
+void PulseTrain::step(Vec2 p0, Vec2 p1, double dt, bool gate, double power) {
   if (!gate) {
     open_ = false;
     have_last_ = false;
@@ -32,6 +33,7 @@ void PulseTrain::step(Vec2 p0, Vec2 p1, double dt, bool gate) {
       gap_max_mm_ = std::max(gap_max_mm_, gap);
       ++gaps_;
     }
+    if (raster_ && power > 0) raster_->deposit(at, power * period_s_);
     last_ = at;
     have_last_ = true;
     ++pulses_;

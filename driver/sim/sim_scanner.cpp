@@ -50,6 +50,7 @@ SimScanner::SimScanner(SimScannerOptions options)
       noise_(options_.plant.noise_um * 1e-3, servo_.tau_s, options_.tick_s / std::max(1, options_.substeps)),
       heat_(options_.plant.rms_accel_pct / 100, options_.plant.thermal_tau_s, options_.tick_s / std::max(1, options_.substeps)),
       dose_(options_.pixel_mm),
+      pulse_dose_(options_.pixel_mm),
       lifecycle_("sim " + options_.head.name) {
   const HeadModel& h = options_.head;
   if (!(options_.tick_s > 0)) throw DeviceError("simulated scanner: tick must be positive");
@@ -90,13 +91,14 @@ DeviceDescription SimScanner::describe() const {
 void SimScanner::start_job() {
   trail_.flush();
   dose_.clear();
+  pulse_dose_.clear();
   lit_points_.clear();
   lit_starts_.clear();
   lit_.runs.clear();
   lit_stale_ = false;
   trace_.clear();
   dose_scale_ = options_.light_power ? 1.0 : laser_.power_pct / 100;
-  pulses_.begin(laser_.frequency_khz, options_.head.spot_diameter_um);
+  pulses_.begin(laser_.frequency_khz, options_.head.spot_diameter_um, pulses_laid_ ? &pulse_dose_ : nullptr);
   if (noise_.active()) noise_.start(options_.plant.seed);  // every job draws the same noise
   heat_.reset();  // the cooling between jobs is not simulated: every job starts cold
   overheated_ = false;
@@ -129,12 +131,15 @@ void SimScanner::begin_job(const JobHeader& header) {
   lifecycle_.begin("begin_job");
   laser_ = laser;
   mark_speed_mm_s_ = pen.mark_speed_mm_s;
+  // A continuous-wave source's frequency is its PWM carrier: its light is continuous.
+  pulses_laid_ = options_.pulse_picture && limits_of(laser_.source).pulsed;
   start_job();
 
   // Size everything the drain thread will touch, so write() never allocates.
   const double margin = dose_margin_mm(header, servo_, options_.plant);
   double lit_length = 0;
   dose_.reserve_along(header.lit_paths, margin);
+  if (pulses_laid_) pulse_dose_.reserve_along(header.lit_paths, margin);
   for (const auto& line : header.lit_paths) lit_length += polyline_length(line);
   if (options_.record_lit_paths) {
     // A point is kept every lit_path_spacing along the beam plus the ends of each run; the lit
@@ -162,6 +167,7 @@ DeviceReport SimScanner::end_job() {
                {"device_time_s", device_time_s()},
                {"dose_tiles", static_cast<double>(dose_.tiles())},
                {"dose_memory_mib", static_cast<double>(dose_.memory_bytes()) / (1 << 20)},
+               {"pulse_dose_memory_mib", static_cast<double>(pulse_dose_.memory_bytes()) / (1 << 20)},
                {"power_pct", laser_.power_pct},
                {"frequency_khz", laser_.frequency_khz},
                {"pulses", static_cast<double>(p.pulses)},
@@ -233,6 +239,7 @@ void SimScanner::write(std::span<const ScanSample> block) {
     lifecycle_.begin("write");
     laser_ = LaserSettings{};
     mark_speed_mm_s_ = DevicePen{}.mark_speed_mm_s;
+    pulses_laid_ = false;  // no lit paths to reserve the pulse raster along: the time average
     start_job();
   }
   try {
@@ -420,9 +427,9 @@ void SimScanner::follow(const ScanSample& s) {
       offset_ = off;
     }
     const Vec2 p1 = beam();
-    pulses_.step(p0, p1, dt, target_power > 0);
-
     const double mean_power = target_power + (power_ - target_power) * mean_share;
+    pulses_.step(p0, p1, dt, target_power > 0, dose_scale_ * mean_power);
+
     power_ += (target_power - power_) * rise;
     if (mean_power > 0)
       trail_.add(p0, p1, dose_scale_ * mean_power * dt);

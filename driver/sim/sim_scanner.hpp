@@ -66,6 +66,9 @@ struct SimScannerOptions {
   // MarkCurrent / 4095), not a share of the pen's power, so the pen's power is not applied a
   // second time. The nominal dose (quality) is the pen's either way.
   bool light_power = false;
+  // Keep a second raster of the pulses where they fired (a pulsed source only): picture_dose().
+  // Costs as much memory again as the dose; a caller that takes no picture can leave it out.
+  bool pulse_picture = true;
   // Fault injection (tests, `marker mark --inject fault@N`): the device reports a fault of its
   // own at this sample of a job and halts.
   std::uint64_t fault_at = UINT64_MAX;
@@ -100,7 +103,13 @@ class SimScanner : public SampleDevice<ScanSample> {
   Vec2 beam() const { return Vec2{axis_[0].x, axis_[1].x} + offset_; }
   Vec2 beam_velocity_mm_s() const { return {axis_[0].v, axis_[1].v}; }
 
+  // The time average of the light along the beam's path: the quality figures' dose.
   const DoseRaster& dose() const { return dose_; }
+  // The dose as the part holds it, for a camera's picture: each pulse where it fired (a pulsed
+  // source, options().pulse_picture), so a fast stroke at a low frequency is a row of dots and
+  // a slower one has its scallops; else (a continuous source, or samples without begin_job: no
+  // pen to fire pulses at) the time average.
+  const DoseRaster& picture_dose() const { return pulses_laid_ ? pulse_dose_ : dose_; }
   // The lit runs of this job (assembled from the recording buffer on first use after a write).
   const LitPaths& lit_paths() const;
   // One row per sample of this job when options().trace is set.
@@ -152,6 +161,8 @@ class SimScanner : public SampleDevice<ScanSample> {
   std::uint64_t samples_ = 0;
   DoseRaster dose_;
   DoseTrail trail_{dose_};
+  DoseRaster pulse_dose_;  // each pulse's dose where it fired (picture_dose)
+  bool pulses_laid_ = false;  // this job (begun with begin_job) fills pulse_dose_
   // Lit beam path as recorded on the drain thread: flat points and the index where each run
   // starts, both reserved by begin_job.
   std::vector<Vec2> lit_points_;

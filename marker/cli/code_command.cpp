@@ -122,16 +122,16 @@ int run_code(const CodeCommandArgs& a) {
   j["corner"] = std::string(to_string(spec.pen.corner));
   j["speed_mm_s"] = spec.pen.mark_speed_mm_s;
   if (!a.preview.empty())
-    write_mark_preview(r.job.plan, scanner.dose(), a.preview);  // written whole
+    write_mark_preview(r.job.plan, scanner.picture_dose(), a.preview);  // written whole
   if (!a.dose_png.empty()) {
     const CameraSettings& cam = spec.verify.camera;
-    const GreyImage picture = part_picture(scanner.dose(), code_window(code, spec.verify.response),
+    const GreyImage picture = part_picture(scanner.picture_dose(), code_window(code, spec.verify.response),
                                            spec.verify.response, code.layout.invert ? dark_part_look(cam.look) : cam.look);
     write_file_whole(a.dose_png, encode_grey_png(picture));
     j["dose_px_um"] = 1e6 / pixels_per_metre(picture.pixel_mm);
   }
   if (!a.camera_png.empty()) {
-    const GreyImage picture = code_picture(code, scanner.dose(), spec.verify).picture;
+    const GreyImage picture = code_picture(code, scanner.picture_dose(), spec.verify).picture;
     write_file_whole(a.camera_png, encode_grey_png(picture));
   }
   if (a.json) {

@@ -12,11 +12,13 @@
 //   `marker head identify --from-image scan.png --pixel-um P --pattern pattern.json` fits the
 //   ramp lag from the picture and saves it as a first-order profile, the limits the --head
 //   preset's (a picture does not show them).
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "driver/laser_source.hpp"
 #include "driver/lmc/lmc_spec.hpp"
 #include "driver/sim/grey_png.hpp"
 #include "marker/cli/commands.hpp"
@@ -174,6 +176,16 @@ MarkedPattern mark_on_board(const PatternArgs& a, const SimScannerOptions& sim, 
   if (!board) throw InputError("--device '" + a.device + "': the lag pattern on a device goes to a board (lmc…)");
   const DeviceDescription desc = opened.device->describe();
   const LagProgram program = lag_pattern_program(pattern, job.laser, desc);
+  // identify follows each line's ink across the picture: pulses farther apart than the spot
+  // leave a row of dots on the fast lines, which it cannot follow (and a camera sees them).
+  const double pitch_um = pattern.fastest_mm_s() / job.laser.frequency_khz;  // mm/s over kHz
+  if (limits_of(job.laser.source).pulsed && pitch_um > sim.head.spot_diameter_um)
+    std::fprintf(stderr,
+                 "marker: warning: at %g kHz the pattern's fastest line (%g mm/s) puts pulses %.0f µm apart on a "
+                 "%g µm spot: its lines are rows of dots that identify cannot follow; --frequency %.0f or more "
+                 "puts them half a spot apart\n",
+                 job.laser.frequency_khz, pattern.fastest_mm_s(), pitch_um, sim.head.spot_diameter_um,
+                 std::ceil(2 * pattern.fastest_mm_s() / sim.head.spot_diameter_um));
   if (!a.json)
     std::fprintf(stderr, "marking the lag pattern on %s (%zu commands); Ctrl-C stops it with the laser off\n",
                  desc.name.c_str(), program.commands.size());
@@ -186,7 +198,7 @@ MarkedPattern mark_on_board(const PatternArgs& a, const SimScannerOptions& sim, 
                      (report.fault ? report.fault->message : std::string("the board ended the job")) +
                      "; nothing was written");
   MarkedPattern marked{desc.name, std::nullopt};
-  if (opened.simulator) marked.picture = photograph_lag_dose(opened.simulator->scanner().dose(), pattern);
+  if (opened.simulator) marked.picture = photograph_lag_dose(opened.simulator->scanner().picture_dose(), pattern);
   return marked;
 }
 

@@ -321,12 +321,12 @@ int run_mark(const MarkArgs& a) {
   // table. A failed job's files show how far it got.
   std::optional<GreyImage> picture;
   if (scanner && !interrupt_flag().requested()) {
-    if (!a.preview.empty()) write_mark_preview(r.job.plan, scanner->dose(), a.preview);
+    if (!a.preview.empty()) write_mark_preview(r.job.plan, scanner->picture_dose(), a.preview);
     if (!a.dose_png.empty()) {
       // The part itself; a job with an inverted code is on a dark part.
       bool dark_part = false;
       for (const CodeObject& c : spec.codes) dark_part = dark_part || c.layout.invert;
-      picture = dose_part_picture(scanner->dose(), spec.verify.response, spec.verify.camera.look, dark_part);
+      picture = dose_part_picture(scanner->picture_dose(), spec.verify.response, spec.verify.camera.look, dark_part);
       write_file_whole(a.dose_png, encode_grey_png(*picture));
     }
     if (!a.trace.empty()) write_trace_csv(scanner->trace(), a.trace);

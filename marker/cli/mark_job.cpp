@@ -253,7 +253,7 @@ int run_mark_job(const MarkJobArgs& a) {
   if (outputs.any())
     options.object_marked = [&](std::size_t, const JobResult& marked) {
       const SimScanner& scanner = opened.simulator->scanner();
-      picture->add(marked.job.plan, scanner.dose(), scanner.trace());
+      picture->add(marked.job.plan, scanner.picture_dose(), scanner.trace());
     };
   bool warned_dots = false, warned_poor = false;
   for (long long i = 1; i <= a.count; ++i) {

@@ -16,7 +16,7 @@ GreyImage photograph_lag_pattern(const SimScannerOptions& head, const LagPattern
   constexpr std::size_t kBlock = 100;
   for (std::size_t i = 0; i < samples.size(); i += kBlock)
     scanner.write(std::span<const ScanSample>(samples).subspan(i, std::min(kBlock, samples.size() - i)));
-  return photograph_lag_dose(scanner.dose(), pattern, camera);
+  return photograph_lag_dose(scanner.picture_dose(), pattern, camera);
 }
 
 GreyImage photograph_lag_dose(const DoseRaster& dose, const LagPattern& pattern, CameraSettings camera) {

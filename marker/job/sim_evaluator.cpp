@@ -38,7 +38,7 @@ void SimEvaluator::evaluate(const JobSpec& spec, JobResult& result) {
 void SimEvaluator::read(const JobSpec& spec, JobResult& result) const {
   result.quality = simulated_quality(result, scanner_, mark_intent(spec, scanner_), reference_);
   result.pulses = scanner_.pulses();
-  result.codes = verify_codes(spec, result.job, scanner_.dose());
+  result.codes = verify_codes(spec, result.job, scanner_.picture_dose());
 }
 
 SimScannerOptions simulator_options(const JobSpec& spec) { return simulator_options(spec.head, spec.pen); }

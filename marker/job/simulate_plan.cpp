@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "driver/sim/head_model.hpp"
+#include "marker/job/job_run.hpp"
 #include "marker/job/sim_evaluator.hpp"
 #include "marker/locus/locus_generator.hpp"
 #include "ringbuffer/laser_delay_line.hpp"
@@ -47,8 +48,12 @@ SimulatedJob simulate_job(const JobSpec& spec) {
   SimulatedJob r;
   r.job = compile_job(spec);
   r.scanner = std::make_unique<SimScanner>(simulator_options(spec.head, spec.pen));
+  // A job as a device runs one: its pen's power and pulses (so the part's picture has its
+  // pulses), its lit paths reserved.
+  r.scanner->begin_job(job_header(spec, r.job, r.scanner->describe()));
   r.mark = simulate_plan(r.job.plan, *r.scanner);
-  r.codes = verify_codes(spec, r.job, r.scanner->dose());
+  r.scanner->end_job();
+  r.codes = verify_codes(spec, r.job, r.scanner->picture_dose());
   return r;
 }
 

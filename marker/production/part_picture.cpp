@@ -37,7 +37,7 @@ PartPicture simulate_part(const JobFile& job, const JobFonts& fonts, const std::
       scanner_options.pixel_mm = picture.dose().pixel_mm();
       SimScanner scanner(scanner_options);
       const JobResult r = run_job_simulated(spec, std::move(compiled), options, scanner);
-      picture.add(r.job.plan, scanner.dose(), scanner.trace());
+      picture.add(r.job.plan, scanner.picture_dose(), scanner.trace());
     } catch (const InputError& e) {
       throw InputError(object_place(job, i) + e.what());
     }

@@ -73,6 +73,36 @@ void BM_SimScanner(benchmark::State& state) {
 }
 BENCHMARK(BM_SimScanner)->ArgName("speed_mm_s")->Arg(1000)->Arg(3000)->Unit(benchmark::kMillisecond);
 
+// The same samples as a job begun with a pen (Q-switched at 30 kHz), with and without the pulse
+// raster for the picture (SimScanner::picture_dose): what laying every pulse costs the drain
+// (write() alone: the reserve before the first sample is not timed).
+void BM_SimScannerPulsePicture(benchmark::State& state) {
+  const Job job = make_job(static_cast<double>(state.range(0)));
+  JobHeader header;
+  header.pens.push_back(DevicePen{});
+  header.lit_paths = job.intended;
+  SimScannerOptions o;
+  o.pulse_picture = state.range(1) != 0;
+  SimScanner sim(o);
+  for (auto _ : state) {
+    state.PauseTiming();  // begin_job's reserve runs before a job's first sample, off its clock
+    sim.reset();
+    sim.begin_job(header);
+    state.ResumeTiming();
+    sim.write(job.samples);
+    sim.end_job();
+    benchmark::DoNotOptimize(sim.picture_dose().total());
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * job.samples.size()));
+}
+BENCHMARK(BM_SimScannerPulsePicture)
+    ->ArgNames({"speed_mm_s", "pulse_picture"})
+    ->Args({1000, 0})
+    ->Args({1000, 1})
+    ->Args({3000, 0})
+    ->Args({3000, 1})
+    ->Unit(benchmark::kMillisecond);
+
 void BM_Quality(benchmark::State& state) {
   const Job job = make_job(static_cast<double>(state.range(0)));
   SimScanner sim;

@@ -33,10 +33,19 @@ slow_filter() {
   echo "*-$pats"
 }
 
+# The real-time job tests (a producer and a drain against the device's clock) run alone after the
+# shards: beside another ASan process on two cores the producer falls behind and the job
+# underruns, which those tests fail on by design (JobSafety.StopFromAnotherThreadInRealTime…:
+# 4 of 8 runs failed with two processes at once, 0 of 5 alone).
+realtime='JobSafety.*'
+
 run_suite() {
-  local suite=$1 f=$filter shards=${MARKER_ASAN_SHARDS:-2} status=0 t0
+  local suite=$1 f=$filter shards=${MARKER_ASAN_SHARDS:-2} status=0 t0 alone=
   t0=$(date +%s)
-  if [ "$suite" = marker_tests ] && [ "$f" = "*" ] && [ -z "${MARKER_ASAN_ALL:-}" ]; then f=$(slow_filter); fi
+  if [ "$suite" = marker_tests ] && [ "$f" = "*" ]; then
+    if [ -z "${MARKER_ASAN_ALL:-}" ]; then f=$(slow_filter):$realtime; else f="*-$realtime"; fi
+    alone=$realtime
+  fi
   echo "asan: $suite ($shards shard(s))"
   local pids=() i
   for ((i = 0; i < shards; ++i)); do
@@ -51,6 +60,14 @@ run_suite() {
       tail -n 80 "$build/asan-$suite-$i.log" >&2
     fi
   done
+  if [ -n "$alone" ]; then
+    echo "asan: $suite $alone (alone)"
+    if ! "$build/tests/$suite" --gtest_brief=1 --gtest_filter="$alone" >"$build/asan-$suite-alone.log" 2>&1; then
+      status=1
+      echo "asan: $suite $alone FAILED:" >&2
+      tail -n 80 "$build/asan-$suite-alone.log" >&2
+    fi
+  fi
   echo "asan: $suite: $(( $(date +%s) - t0 )) s"
   return $status
 }

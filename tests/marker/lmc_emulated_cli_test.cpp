@@ -44,8 +44,12 @@ TEST(LmcEmulatedCli, MarkThroughTheEmulatedBoardReportsTheSimulatorsFigures) {
   EXPECT_NE(board["device"].get<std::string>().find("lmc-emulated:reference (lmc 4C4D4301, real time"), std::string::npos)
       << board["device"];
   EXPECT_NE(quick["device"].get<std::string>().find("virtual time"), std::string::npos);
-  // The board took its own time, which the scanner saw tick for tick.
-  EXPECT_NEAR(board["device_figures"]["scanner_device_time_s"].get<double>(), board["mark_time_s"].get<double>(), 0.02);
+  // The board took its own time, which the scanner saw tick for tick: the wall clock is never
+  // shorter than the board's time (it is not a fast-forward model), and longer only by the host's
+  // start and end (a few ms here; tens under a sanitizer on a loaded machine).
+  const double board_s = board["device_figures"]["scanner_device_time_s"].get<double>();
+  EXPECT_GE(board["mark_time_s"].get<double>(), board_s - 0.005);
+  EXPECT_LE(board["mark_time_s"].get<double>(), board_s + 0.1);
 }
 
 TEST(LmcEmulatedCli, FrameAndProbeRunOnIt) {

@@ -12,6 +12,7 @@
 //   `marker head identify --from-image scan.png --pixel-um P --pattern pattern.json` fits the
 //   ramp lag from the picture and saves it as a first-order profile, the limits the --head
 //   preset's (a picture does not show them).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -79,8 +80,8 @@ int identify_from_image(const IdentifyArgs& a) {
   if (a.pattern.empty()) throw InputError("--from-image needs --pattern FILE (the pattern file test-pattern wrote)");
   if (!a.pixel_um) throw InputError("--from-image needs --pixel-um (the picture's pixel on the part, µm)");
   if (!a.head.model.empty() || a.head.zeta)
-    throw InputError("--head-model and --head-zeta do not apply with --from-image: a picture gives the ramp "
-                     "lag, which the profile keeps as a first-order τ");
+    throw InputError("--head-model and --head-zeta do not apply with --from-image: the picture's lines give "
+                     "the ramp lag and its corners the servo's order and ζ");
   const HeadModel head = simulated_head(a.head);
   const std::string path = a.output.empty() ? "head-" + head.name + ".json" : a.output;
   check_standard_output({{"--output", &path}}, a.json);
@@ -94,10 +95,13 @@ int identify_from_image(const IdentifyArgs& a) {
   const LagFit fit = fit_lag_from_image(picture, *a.pixel_um / 1000, pattern, a.from_image);
 
   HeadProfile p = datasheet_profile(head);
-  p.model = ServoOrder::first;
+  const CornerFit& corners = fit.corners;
+  p.model = corners.second_order ? ServoOrder::second : ServoOrder::first;
   p.tau_s = fit.tau_s;
-  p.fit_rms_first_um = fit.rms_um;
-  p.fit_rms_second_um = 0;
+  if (corners.second_order) p.omega_n_rad_s = corners.omega_n_rad_s, p.zeta = corners.zeta;
+  // With corners the residuals are theirs (each model's); without, the lines' (first order).
+  p.fit_rms_first_um = corners.corners.empty() ? fit.rms_um : corners.rms_first_um;
+  p.fit_rms_second_um = corners.corners.empty() ? 0 : corners.rms_second_um;
   p.source = "image";
   progress.writing_files();
   save_head_profile(p, path);
@@ -115,6 +119,20 @@ int identify_from_image(const IdentifyArgs& a) {
                             {"speed_mm_s", f.speed_mm_s},
                             {"ends_apart_mm", f.ends_apart_mm},
                             {"residual_um", f.residual_um}});
+    if (!corners.corners.empty()) {
+      j["model"] = to_string(p.model);
+      j["zeta"] = corners.zeta;
+      j["omega_n_rad_s"] = corners.omega_n_rad_s;
+      j["corner_rms_first_um"] = corners.rms_first_um;
+      j["corner_rms_second_um"] = corners.rms_second_um;
+      for (const CornerFigure& c : corners.corners)
+        j["corners"].push_back({{"axis", c.axis == 0 ? "x" : "y"},
+                                {"speed_mm_s", c.speed_mm_s},
+                                {"places", c.rows},
+                                {"overshoot_um", c.overshoot_um},
+                                {"rms_first_um", c.rms_first_um},
+                                {"rms_second_um", c.rms_second_um}});
+    }
     j["profile"] = path;
     std::cout << j.dump(2) << "\n";
     return 0;
@@ -123,8 +141,18 @@ int identify_from_image(const IdentifyArgs& a) {
               a.from_image.c_str(), *a.pixel_um, fit.pairs.size());
   std::printf("tau %.4f ms (x %.4f ms, y %.4f ms), fit rms %.2f µm\n", fit.tau_s * 1e3, fit.tau_x_s * 1e3,
               fit.tau_y_s * 1e3, fit.rms_um);
-  std::printf("model: first order; limits (the preset's, not measured): speed %.0f mm/s, acceleration %.3g mm/s²\n",
-              p.max_speed_mm_s, p.max_accel_mm_s2);
+  if (corners.corners.empty()) {
+    std::printf("no corners in the pattern (a pattern file from before they were added): first order assumed\n");
+  } else {
+    double most = 0;
+    for (const CornerFigure& c : corners.corners) most = std::max(most, c.overshoot_um);
+    std::printf("%zu corners: overshoot up to %.1f µm; first order rms %.2f µm, second order (zeta %.3f, omega_n %.0f "
+                "rad/s) rms %.2f µm\n",
+                corners.corners.size(), most, corners.rms_first_um, corners.zeta, corners.omega_n_rad_s,
+                corners.rms_second_um);
+  }
+  std::printf("model: %s order; limits (the preset's, not measured): speed %.0f mm/s, acceleration %.3g mm/s²\n",
+              std::string(to_string(p.model)).c_str(), p.max_speed_mm_s, p.max_accel_mm_s2);
   std::printf("wrote %s\n", path.c_str());
   return 0;
 }
@@ -235,6 +263,8 @@ int test_pattern(const PatternArgs& a) {
     j["pattern"] = a.output;
     j["lines"] = pattern.lines.size();
     j["speeds_mm_s"] = pattern.speeds_mm_s;
+    j["corners"] = pattern.corners.size();
+    j["corner_speeds_mm_s"] = pattern.corner_speeds_mm_s;
     if (marked.picture) {
       j["picture"] = a.picture;
       j["pixel_um"] = marked.picture->pixel_mm * 1e3;
@@ -244,8 +274,9 @@ int test_pattern(const PatternArgs& a) {
     std::cout << j.dump(2) << "\n";
     return 0;
   }
-  std::printf("head %s: lag pattern of %zu lines (%g × %g mm), every delay zero, marked on %s\n",
-              sim.head.name.c_str(), pattern.lines.size(), hi.x - lo.x, hi.y - lo.y, marked.device.c_str());
+  std::printf("head %s: lag pattern of %zu lines and %zu corners (%g × %g mm), every delay zero, marked on %s\n",
+              sim.head.name.c_str(), pattern.lines.size(), pattern.corners.size(), hi.x - lo.x, hi.y - lo.y,
+              marked.device.c_str());
   if (!marked.picture) {
     std::printf("wrote %s; scan or photograph the part square-on at %g µm per pixel or finer, then\n",
                 a.output.c_str(), kLagPhotoPixelUm);

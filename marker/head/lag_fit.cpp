@@ -1,57 +1,15 @@
 #include "marker/head/lag_fit.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <functional>
 #include <sstream>
 
 #include "base/error.hpp"
+#include "marker/head/pattern_marks.hpp"
 
 namespace mark {
 namespace {
-
-// Otsu's threshold over 256 bins of 0..1: the level that best splits the picture in two.
-double otsu_threshold(const GrayImage& g) {
-  std::array<double, 256> hist{};
-  for (float v : g.pixels) hist[static_cast<std::size_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f)] += 1;
-  const double total = static_cast<double>(g.pixels.size());
-  double sum_all = 0;
-  for (std::size_t i = 0; i < 256; ++i) sum_all += static_cast<double>(i) * hist[i];
-  double w0 = 0, sum0 = 0, best = -1;
-  std::size_t best_i = 127;
-  for (std::size_t i = 0; i < 255; ++i) {
-    w0 += hist[i];
-    sum0 += static_cast<double>(i) * hist[i];
-    const double w1 = total - w0;
-    if (w0 == 0 || w1 == 0) continue;
-    const double m0 = sum0 / w0, m1 = (sum_all - sum0) / w1;
-    const double between = w0 * w1 * (m0 - m1) * (m0 - m1);
-    if (between > best) best = between, best_i = i;
-  }
-  return (static_cast<double>(best_i) + 0.5) / 255.0;
-}
-
-// The picture seen as marks: ink(x, y) > 0 on a mark, < 0 on the surface, the grey's distance
-// from the threshold towards the marks' side.
-class Marks {
- public:
-  explicit Marks(const GrayImage& g) : g_(g), t_(otsu_threshold(g)) {
-    std::size_t below = 0;
-    for (float v : g.pixels) below += v < t_;
-    dark_ = 2 * below < g.pixels.size();
-  }
-  double ink(int x, int y) const {
-    const double v = g_.at(x, y);
-    return dark_ ? t_ - v : v - t_;
-  }
-  bool dark() const { return dark_; }
-
- private:
-  const GrayImage& g_;
-  double t_;
-  bool dark_ = true;
-};
 
 // First and last index whose count reaches `min_count`; false when none does.
 bool extent(const std::vector<int>& counts, int min_count, int& first, int& last) {
@@ -92,7 +50,7 @@ LagFit fit_lag_from_image(const GrayImage& g, double pixel_mm, const LagPattern&
                           const std::string& where) {
   if (g.width < 8 || g.height < 8)
     throw InputError("'" + where + "': the picture is too small to show the lag pattern");
-  const Marks marks(g);
+  const PatternMarks marks(g);
   // Columns and rows holding at least 3 marked pixels: a speck of noise does not move the box.
   std::vector<int> cols(static_cast<std::size_t>(g.width)), rows(static_cast<std::size_t>(g.height));
   for (int y = 0; y < g.height; ++y)
@@ -275,6 +233,19 @@ LagFit fit_lag_from_image(const GrayImage& g, double pixel_mm, const LagPattern&
   }
   fit.tau_s = (fit.tau_x_s + fit.tau_y_s) / 2;
   fit.rms_um = std::sqrt(sum_sq / static_cast<double>(fit.pairs.size()));
+
+  // The lines' tilt in the picture (rows grow downwards): x lines' dY/dX, y lines' dX/dY.
+  double turn[2] = {0, 0};
+  int count[2] = {0, 0};
+  for (std::size_t i = 0; i < pattern.lines.size(); ++i) {
+    const Track& t = tracks[i];
+    if (t.s2 == t.s1) continue;
+    turn[pattern.lines[i].axis] += -(t.c2 - t.c1) / (t.s2 - t.s1);
+    ++count[pattern.lines[i].axis];
+  }
+  const PlacedPicture placed{marks, pixel_mm, lo, hi, x0, y0, count[0] ? turn[0] / count[0] : 0,
+                             count[1] ? turn[1] / count[1] : 0};
+  fit.corners = fit_corners(placed, pattern, fit.tau_x_s, fit.tau_y_s, where);
   return fit;
 }
 

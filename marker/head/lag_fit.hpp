@@ -15,9 +15,12 @@
 //      pixels.
 //   4. Per speed, the far ends of the forward and the backward line lie L − 2·v·τ + c apart;
 //      a straight line through those distances over the speeds gives τ per axis.
+//   5. Where the pattern has corners, they give the servo's order and ζ at that τ
+//      (corner_fit.hpp), the lines' tilt taking out the picture's turn.
 #include <string>
 #include <vector>
 
+#include "marker/head/corner_fit.hpp"
 #include "marker/head/lag_pattern.hpp"
 #include "marker/image/gray_image.hpp"
 
@@ -35,6 +38,7 @@ struct LagFit {
   double tau_s = 0;          // their mean: the profile's τ
   double rms_um = 0;         // of the residuals
   std::vector<LagPairFigure> pairs;
+  CornerFit corners;         // empty when the pattern has none
 };
 
 // Throws InputError naming `where` (the picture's file name) when the picture does not show the

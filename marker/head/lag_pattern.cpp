@@ -13,6 +13,7 @@ namespace {
 
 constexpr const char* kPatternFormat = "marker lag pattern";
 constexpr int kPatternVersion = 1;
+constexpr double kCornerRowGap_mm = 1.5;  // between the corners' rows, and above them
 
 
 // Lays the lines out from the pattern's parameters (one function, so a parsed pattern is the
@@ -42,6 +43,29 @@ void lay_out(LagPattern& p, Vec2 centre) {
       if (!l.forward) std::swap(l.start, l.end);
       p.lines.push_back(l);
     }
+  // The corners below the x rows: the first row's leg along the pattern's bottom edge (where the
+  // y lines start), each corner `leg + 2` mm right of the last.
+  p.corners.clear();
+  const double leg = p.corner_leg_mm;
+  for (std::size_t i = 0; leg > 0 && i < p.corner_speeds_mm_s.size(); ++i) {
+    const double x = x0 + static_cast<double>(i) * (leg + 2);
+    const double v = p.corner_speeds_mm_s[i];
+    p.corners.push_back({0, v, {x, y0}, {x + leg, y0}, {x + leg, y0 + leg}});
+    const double y = y0 + leg + kCornerRowGap_mm;
+    p.corners.push_back({1, v, {x, y}, {x, y + leg}, {x + leg, y + leg}});
+  }
+}
+
+// The corners' rows must lie inside the lines' extent and clear of the x rows (their strip in
+// the fit reaches half a pitch below the last row).
+bool corners_fit(const LagPattern& p) {
+  if (p.corners.empty()) return true;
+  double right = -1e300, top = -1e300;
+  for (const LagCorner& c : p.corners) right = std::max(right, c.end.x), top = std::max(top, c.end.y);
+  double lowest_row = 1e300, x_end = -1e300;
+  for (const LagLine& l : p.lines)
+    if (l.axis == 0) lowest_row = std::min(lowest_row, l.start.y), x_end = std::max({x_end, l.start.x, l.end.x});
+  return right <= x_end + 1e-9 && top + kCornerRowGap_mm <= lowest_row + 1e-9;
 }
 
 void check_field(const LagPattern& p, const HeadModel& head) {
@@ -98,7 +122,16 @@ LagPattern lag_pattern(const HeadModel& head, Vec2 centre) {
       << " mm/s; the pattern needs three speeds of at least 50 mm/s within 40 % of it";
     throw InputError(m.str());
   }
+  for (double v : p.speeds_mm_s)
+    if (v <= kLagCornerTopSpeed_mm_s) p.corner_speeds_mm_s.push_back(v);
+  if (p.corner_speeds_mm_s.size() > 3) p.corner_speeds_mm_s.erase(p.corner_speeds_mm_s.begin(), p.corner_speeds_mm_s.end() - 3);
+  p.corner_leg_mm = kLagCornerLeg_mm;
   lay_out(p, centre);
+  if (!corners_fit(p)) {  // no room below the rows: lines only
+    p.corner_leg_mm = 0;
+    p.corner_speeds_mm_s.clear();
+    lay_out(p, centre);
+  }
   check_field(p, head);
   return p;
 }
@@ -122,6 +155,15 @@ std::vector<ScanSample> lag_pattern_samples(const LagPattern& pattern, double ti
       emit(l.start + (static_cast<double>(i) / static_cast<double>(n)) * (l.end - l.start), true, power);
     hold(l.end, kLagAfterLine_s);
   }
+  for (const LagCorner& c : pattern.corners) {
+    hold(c.start, kLagJumpSettle_s);
+    const auto power = static_cast<std::uint8_t>(std::clamp(std::lround(255 * c.speed_mm_s / fastest), 1L, 255L));
+    for (const auto& [a, b] : {std::pair{c.start, c.corner}, std::pair{c.corner, c.end}}) {
+      const auto n = static_cast<std::size_t>(std::ceil(norm(b - a) / (c.speed_mm_s * tick_s) - 1e-9));
+      for (std::size_t i = 1; i <= n; ++i) emit(a + (static_cast<double>(i) / static_cast<double>(n)) * (b - a), true, power);
+    }
+    hold(c.end, kLagAfterLine_s);
+  }
   return out;
 }
 
@@ -136,6 +178,10 @@ std::string lag_pattern_json(const LagPattern& p) {
   j["pitch_mm"] = p.pitch_mm;
   j["gap_mm"] = p.gap_mm;
   j["speeds_mm_s"] = p.speeds_mm_s;
+  if (!p.corners.empty()) {
+    j["corner_leg_mm"] = p.corner_leg_mm;
+    j["corner_speeds_mm_s"] = p.corner_speeds_mm_s;
+  }
   return j.dump(2) + "\n";
 }
 
@@ -162,7 +208,29 @@ LagPattern parse_lag_pattern(std::string_view text, std::string_view where) {
   const Vec2 c{(*centre)[0].get<double>(), (*centre)[1].get<double>()};
   if (!std::isfinite(c.x) || !std::isfinite(c.y) || std::abs(c.x) > 1e4 || std::abs(c.y) > 1e4)
     head_file_error(kPatternKind, where, "'centre_mm' lies outside ±10000 mm");
+  // The corners (optional: a pattern file from before they were added has none).
+  const auto legs = j.find("corner_leg_mm");
+  if (legs != j.end()) {
+    p.corner_leg_mm = number(j, "corner_leg_mm", 1, 20, where);
+    const auto cs = j.find("corner_speeds_mm_s");
+    if (cs == j.end() || !cs->is_array() || cs->empty() || cs->size() > 10)
+      head_file_error(kPatternKind, where, "'corner_speeds_mm_s' must list 1 to 10 speeds with 'corner_leg_mm'");
+    for (const auto& s : *cs) {
+      if (!s.is_number() || !(s.get<double>() >= 1 && s.get<double>() <= 1e5))
+        head_file_error(kPatternKind, where, "'corner_speeds_mm_s' holds a value outside 1 to 100000 mm/s");
+      // A board marks a corner with its speed's pen (lag_program.cpp).
+      if (std::find(p.speeds_mm_s.begin(), p.speeds_mm_s.end(), s.get<double>()) == p.speeds_mm_s.end()) {
+        std::ostringstream m;
+        m << "'corner_speeds_mm_s' holds " << s.get<double>() << " mm/s, none of 'speeds_mm_s'";
+        head_file_error(kPatternKind, where, m.str());
+      }
+      p.corner_speeds_mm_s.push_back(s.get<double>());
+    }
+  }
   lay_out(p, c);
+  if (!corners_fit(p))
+    head_file_error(kPatternKind, where,
+                    "the corners ('corner_leg_mm', 'corner_speeds_mm_s') do not fit below the x lines");
   return p;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
 
 #include "base/error.hpp"
 
@@ -44,17 +45,22 @@ LagProgram lag_pattern_program(const LagPattern& pattern, const LaserSettings& l
     for (int i = 0; i < pieces; ++i) p.commands.push_back(DeviceCommand::dwell_for(seconds / pieces, false));
   };
   int selected = -1;
-  for (const LagLine& l : pattern.lines) {
-    const auto pen = static_cast<int>(std::find(pattern.speeds_mm_s.begin(), pattern.speeds_mm_s.end(), l.speed_mm_s) -
+  // One lit path from rest: a jump, the settling dwell, the marks at the speed's pen, a dwell.
+  auto path = [&](double speed_mm_s, const std::vector<Vec2>& points) {
+    const auto pen = static_cast<int>(std::find(pattern.speeds_mm_s.begin(), pattern.speeds_mm_s.end(), speed_mm_s) -
                                       pattern.speeds_mm_s.begin());
+    if (pen == static_cast<int>(pattern.speeds_mm_s.size()))
+      throw InputError("lag pattern: a corner's speed " + std::to_string(speed_mm_s) + " mm/s is none of its lines'");
     if (pen != selected) p.commands.push_back(DeviceCommand::select_pen(static_cast<std::uint16_t>(pen)));
     selected = pen;
-    p.commands.push_back(DeviceCommand::jump_to(l.start.x, l.start.y));
+    p.commands.push_back(DeviceCommand::jump_to(points.front().x, points.front().y));
     dwell(kLagJumpSettle_s);
-    p.commands.push_back(DeviceCommand::mark_to(l.end.x, l.end.y));
+    for (std::size_t i = 1; i < points.size(); ++i) p.commands.push_back(DeviceCommand::mark_to(points[i].x, points[i].y));
     dwell(kLagAfterLine_s);
-    p.header.lit_paths.push_back({l.start, l.end});
-  }
+    p.header.lit_paths.push_back(points);
+  };
+  for (const LagLine& l : pattern.lines) path(l.speed_mm_s, {l.start, l.end});
+  for (const LagCorner& c : pattern.corners) path(c.speed_mm_s, {c.start, c.corner, c.end});
   return p;
 }
 

@@ -2,7 +2,7 @@
 // throws InputError (a bad file, reported with its key and range) or returns a profile the
 // planner can trust — the chosen model's time constants and both limits finite and positive, its
 // ramp lag positive; parse_lag_pattern either throws InputError or returns a pattern of four
-// lines per speed, every end finite. Anything else (a crash, a sanitizer report, another
+// lines per speed and two corners per corner speed, every end finite. Anything else (a crash, a sanitizer report, another
 // exception, a broken invariant) is a bug.
 #include <cmath>
 #include <cstdint>
@@ -42,6 +42,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (!std::isfinite(l.start.x) || !std::isfinite(l.start.y) || !std::isfinite(l.end.x) ||
           !std::isfinite(l.end.y) || !positive(l.speed_mm_s))
         broken("a line's end or speed is not finite");
+    if (p.corners.size() != 2 * p.corner_speeds_mm_s.size()) broken("not two corners per corner speed");
+    for (const mark::LagCorner& c : p.corners)
+      if (!std::isfinite(c.end.x) || !std::isfinite(c.end.y) || !positive(c.speed_mm_s))
+        broken("a corner's end or speed is not finite");
   } catch (const mark::InputError&) {
   }
   return 0;

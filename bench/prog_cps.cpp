@@ -17,7 +17,10 @@
 // 10 µs servo dead time, a 10 kHz mirror resonance, 1 µm of position noise, speeding-up
 // acceleration falling to nothing at 12 m/s (back-EMF) and a drive that trips above 40 % rms
 // acceleration over 20 ms (issue 24; the effects are driver/sim/plant.hpp's, which the planner
-// does not model).
+// does not model). The "picture per plant" rows mark on the same set, but each plant is planned
+// with the profile fitted from a picture of its own lag test pattern (`head test-pattern`, then
+// `head identify --from-image`): what a user who identifies the head in front of them gets, the
+// lag error of a datasheet gone and the effects the fit cannot see left.
 //
 // Every pen gets the pulse frequency its speed needs for the spots of consecutive pulses to
 // overlap (the quality classes see gaps between them), within the laser source's range
@@ -51,6 +54,7 @@
 #include "marker/cli/pen_options.hpp"
 #include "marker/cli/plant_option.hpp"
 #include "marker/head/head_fit.hpp"
+#include "marker/head/lag_photo.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/job/intended_strokes.hpp"
 #include "marker/job/job.hpp"
@@ -280,6 +284,8 @@ struct Row {
   std::vector<double> errors = {0.0};
   // The plants (`--plant` texts) every error is marked on: {""} the exact model, or the robust set.
   std::vector<std::string> plants = {""};
+  // Per plant, the profile fitted from a picture of its own test pattern; empty: `model` for all.
+  std::vector<HeadProfile> plant_models;
   std::string model_note;   // "" or e.g. "first-order model"
   const Strategy* strategy = nullptr;
   const QualityLimits* level = nullptr;
@@ -378,9 +384,10 @@ class Search {
       double raise = 0;
       for (std::size_t c = 0; ok && c < row_.errors.size() * plants_.size(); ++c) {
         const double e = row_.errors[c / plants_.size()];
+        const HeadProfile& model = row_.plant_models.empty() ? row_.model : row_.plant_models[c % plants_.size()];
         std::optional<Trial> one;
         try {
-          one = mark_with(w_, row_.head, pen_at(*row_.strategy, x, row_.model.with_lag_error(e)),
+          one = mark_with(w_, row_.head, pen_at(*row_.strategy, x, model.with_lag_error(e)),
                           plants_[c % plants_.size()], khz);
         } catch (const InputError&) {
         } catch (const DeviceError&) {
@@ -523,13 +530,26 @@ int main(int argc, char** argv) {
 
     // The rows: every head × strategy; model-error, second-order and laser-rise rows on SL10.
     std::vector<Row> rows;
+    // Each plant's profile from a picture of its own lag test pattern (the identified limits).
+    auto pictured = [&](const RealHead& real, const std::vector<std::string>& plants) {
+      std::vector<HeadProfile> models;
+      for (const std::string& p : plants) {
+        SimScannerOptions o;
+        o.head = real.model;
+        o.plant = cli::parse_plant_option(p);
+        models.push_back(picture_profile(profile_of(real.model), photographed_lag_fit(o)));
+      }
+      return models;
+    };
     auto add = [&](const std::string& name, RealHead real, HeadProfile model, std::vector<double> errors,
-                   std::string note, const Strategy* s, std::vector<std::string> plants = {""}) {
+                   std::string note, const Strategy* s, std::vector<std::string> plants = {""},
+                   std::vector<HeadProfile> plant_models = {}) {
       for (const QualityLimits* level : {&kHighQuality, &kGoodQuality}) {
         Row r;
         r.head_name = name;
         r.head = real;
-        r.model = model;
+        r.model = plant_models.empty() ? model : plant_models.front();  // the reported pen's
+        r.plant_models = plant_models;
         r.errors = errors;
         r.plants = plants;
         r.model_note = note;
@@ -563,6 +583,10 @@ int main(int argc, char** argv) {
         // (none, none+la); in the short search only for the blanking and feed-forward baselines.
         if (s->name != "none" && s->name != "none+la" && (!quick || s->name == "blanking" || s->name == "none+ff"))
           add("SL10", sl, profile_of(sl.model), {0.0}, "", s, kRobustPlants);
+        // Feed-forward on the same set, each plant planned from its own picture.
+        if (s->feed_forward && (!quick || s->name == "none+ff"))
+          add("SL10", sl, profile_of(sl.model), {0.0}, "picture per plant", s, kRobustPlants,
+              pictured(sl, kRobustPlants));
       }
     }
 

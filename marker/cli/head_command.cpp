@@ -94,15 +94,8 @@ int identify_from_image(const IdentifyArgs& a) {
   progress.step("fitting the lag", 1, 2);
   const LagFit fit = fit_lag_from_image(picture, *a.pixel_um / 1000, pattern, a.from_image);
 
-  HeadProfile p = datasheet_profile(head);
+  const HeadProfile p = picture_profile(datasheet_profile(head), fit);
   const CornerFit& corners = fit.corners;
-  p.model = corners.second_order ? ServoOrder::second : ServoOrder::first;
-  p.tau_s = fit.tau_s;
-  if (corners.second_order) p.omega_n_rad_s = corners.omega_n_rad_s, p.zeta = corners.zeta;
-  // With corners the residuals are theirs (each model's); without, the lines' (first order).
-  p.fit_rms_first_um = corners.corners.empty() ? fit.rms_um : corners.rms_first_um;
-  p.fit_rms_second_um = corners.corners.empty() ? 0 : corners.rms_second_um;
-  p.source = "image";
   progress.writing_files();
   save_head_profile(p, path);
   if (a.json) {

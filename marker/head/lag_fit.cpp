@@ -249,4 +249,15 @@ LagFit fit_lag_from_image(const GrayImage& g, double pixel_mm, const LagPattern&
   return fit;
 }
 
+HeadProfile picture_profile(HeadProfile p, const LagFit& fit) {
+  const CornerFit& corners = fit.corners;
+  p.model = corners.second_order ? ServoOrder::second : ServoOrder::first;
+  p.tau_s = fit.tau_s;
+  if (corners.second_order) p.omega_n_rad_s = corners.omega_n_rad_s, p.zeta = corners.zeta;
+  p.fit_rms_first_um = corners.corners.empty() ? fit.rms_um : corners.rms_first_um;
+  p.fit_rms_second_um = corners.corners.empty() ? 0 : corners.rms_second_um;
+  p.source = "image";
+  return p;
+}
+
 }  // namespace mark

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "marker/head/corner_fit.hpp"
+#include "marker/head/head_profile.hpp"
 #include "marker/head/lag_pattern.hpp"
 #include "marker/image/gray_image.hpp"
 
@@ -46,5 +47,10 @@ struct LagFit {
 // line whose end cannot be found.
 LagFit fit_lag_from_image(const GrayImage& picture, double pixel_mm, const LagPattern& pattern,
                           const std::string& where);
+
+// The head profile a picture gives (`"source": "image"`): `base`'s limits, which a picture does
+// not show, with the lines' ramp lag and the corners' model — second order at their (ωn, ζ)
+// when they choose it — and the corners' residuals (without corners: the lines', first order).
+HeadProfile picture_profile(HeadProfile base, const LagFit& fit);
 
 }  // namespace mark

@@ -34,4 +34,13 @@ GreyImage photograph_lag_dose(const DoseRaster& dose, const LagPattern& pattern,
   return photograph(dose, window, response, camera, false, px).picture;
 }
 
+LagFit photographed_lag_fit(const SimScannerOptions& head) {
+  const LagPattern pattern = lag_pattern(head.head);
+  const GreyImage picture = photograph_lag_pattern(head, pattern);
+  GrayImage grey{picture.width, picture.height, {}};
+  grey.pixels.reserve(picture.grey.size());
+  for (std::uint8_t v : picture.grey) grey.pixels.push_back(static_cast<float>(v) / 255.0f);
+  return fit_lag_from_image(grey, picture.pixel_mm, pattern, "the simulated head's picture");
+}
+
 }  // namespace mark

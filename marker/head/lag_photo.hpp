@@ -6,6 +6,7 @@
 #include "base/grey_image.hpp"
 #include "driver/sim/camera_model.hpp"
 #include "driver/sim/sim_scanner.hpp"
+#include "marker/head/lag_fit.hpp"
 #include "marker/head/lag_pattern.hpp"
 
 namespace mark {
@@ -23,5 +24,9 @@ GreyImage photograph_lag_pattern(const SimScannerOptions& head, const LagPattern
 // The photograph alone, of a pattern already marked into `dose` (by the emulated board's
 // scanner, say), with the same material and camera.
 GreyImage photograph_lag_dose(const DoseRaster& dose, const LagPattern& pattern, CameraSettings camera = {});
+
+// The whole identification from a picture on the simulator, as a user runs it with the two
+// commands: the head's pattern marked on the plant as it is, photographed, and fitted.
+LagFit photographed_lag_fit(const SimScannerOptions& head);
 
 }  // namespace mark

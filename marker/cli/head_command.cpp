@@ -162,6 +162,7 @@ struct PatternArgs {
   bool virtual_time = false;
   std::vector<const CLI::Option*> board_options;  // refused with --device sim
   const CLI::Option* picture_option = nullptr;     // refused with a real board
+  const CLI::Option* frequency_option = nullptr;   // not given: the pulses' frequency is picked
 };
 
 struct MarkedPattern {
@@ -177,6 +178,21 @@ MarkedPattern mark_on_board(const PatternArgs& a, const SimScannerOptions& sim, 
   job.head = sim.head;
   job.laser = a.laser;
   job.laser.source = *parse_laser_source(a.source);
+  // identify follows each line's ink across the picture: pulses farther apart than the spot
+  // leave a row of dots on the fast lines, which it cannot follow (and a camera sees them).
+  // Unless --frequency says otherwise, the pulses are half a spot apart on the fastest line,
+  // within the source's range.
+  const SourceLimits source = limits_of(job.laser.source);
+  const double overlapping_khz = std::ceil(2 * pattern.fastest_mm_s() / sim.head.spot_diameter_um);
+  if (source.pulsed && a.frequency_option->count() == 0) {
+    job.laser.frequency_khz = std::clamp(overlapping_khz, source.min_frequency_khz, source.max_frequency_khz);
+    if (!a.json)
+      std::fprintf(stderr,
+                   "marker: pulses at %g kHz, %.0f µm apart on the fastest line (%g mm/s, %g µm spot); "
+                   "--frequency sets another\n",
+                   job.laser.frequency_khz, pattern.fastest_mm_s() / job.laser.frequency_khz,
+                   pattern.fastest_mm_s(), sim.head.spot_diameter_um);
+  }
   check_laser_settings(job.laser, "--source " + a.source + ": ");
   SimSettings settings;
   settings.laser_rise_s = sim.laser_rise_s;
@@ -197,16 +213,14 @@ MarkedPattern mark_on_board(const PatternArgs& a, const SimScannerOptions& sim, 
   if (!board) throw InputError("--device '" + a.device + "': the lag pattern on a device goes to a board (lmc…)");
   const DeviceDescription desc = opened.device->describe();
   const LagProgram program = lag_pattern_program(pattern, job.laser, desc);
-  // identify follows each line's ink across the picture: pulses farther apart than the spot
-  // leave a row of dots on the fast lines, which it cannot follow (and a camera sees them).
   const double pitch_um = pattern.fastest_mm_s() / job.laser.frequency_khz;  // mm/s over kHz
-  if (limits_of(job.laser.source).pulsed && pitch_um > sim.head.spot_diameter_um)
+  if (source.pulsed && pitch_um > sim.head.spot_diameter_um)
     std::fprintf(stderr,
                  "marker: warning: at %g kHz the pattern's fastest line (%g mm/s) puts pulses %.0f µm apart on a "
                  "%g µm spot: its lines are rows of dots that identify cannot follow; --frequency %.0f or more "
                  "puts them half a spot apart\n",
                  job.laser.frequency_khz, pattern.fastest_mm_s(), pitch_um, sim.head.spot_diameter_um,
-                 std::ceil(2 * pattern.fastest_mm_s() / sim.head.spot_diameter_um));
+                 overlapping_khz);
   if (!a.json)
     std::fprintf(stderr, "marking the lag pattern on %s (%zu commands); Ctrl-C stops it with the laser off\n",
                  desc.name.c_str(), program.commands.size());
@@ -322,6 +336,7 @@ Command make_head_command() {
         const std::size_t before = pat->get_options().size();
         add_lmc_options(*pat, t->lmc);
         add_laser_options(*pat, t->laser);
+        t->frequency_option = pat->get_option("--frequency");
         add_setting(*pat, kLaserSource, t->source);
         const auto options = pat->get_options();
         t->board_options.assign(options.begin() + static_cast<std::ptrdiff_t>(before), options.end());

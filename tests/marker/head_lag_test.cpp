@@ -462,17 +462,19 @@ TEST(HeadLagCli, TestPatternOnABoardSendsOneMarkPerLineWithPowerInProportion) {
   ASSERT_EQ(powers.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(powers[i], expected[i], 0.03);
 
-  // At the default 30 kHz the 4000 mm/s line is a row of dots 133 µm apart, which the fit
-  // cannot follow (the command says so); at 200 kHz they overlap.
+  // At 30 kHz the 4000 mm/s line is a row of dots 133 µm apart, which the fit cannot follow
+  // (the command says so); without --frequency it picks 200 kHz, where they overlap.
   const auto dotted = test::run_cli({"head", "test-pattern", "--device", "lmc-emulated", "--virtual-time", "-o",
-                                     pattern, "--picture", picture, "--json"});
+                                     pattern, "--picture", picture, "--frequency", "30", "--json"});
   ASSERT_EQ(dotted.code, 0) << dotted.err;
   EXPECT_NE(dotted.err.find("pulses 133 µm apart on a 40 µm spot"), std::string::npos) << dotted.err;
   const auto emulated = test::run_cli({"head", "test-pattern", "--device", "lmc-emulated", "--virtual-time",
-                                       "--plant", "tau_scale=0.9", "--frequency", "200", "-o", pattern, "--picture",
-                                       picture, "--json"});
+                                       "--plant", "tau_scale=0.9", "-o", pattern, "--picture", picture});
   ASSERT_EQ(emulated.code, 0) << emulated.err;
   EXPECT_EQ(emulated.err.find("warning"), std::string::npos) << emulated.err;
+  EXPECT_NE(emulated.err.find("marker: pulses at 200 kHz, 20 µm apart on the fastest line (4000 mm/s, 40 µm spot)"),
+            std::string::npos)
+      << emulated.err;
   const auto fitted = test::run_cli({"head", "identify", "--from-image", picture, "--pixel-um", "10", "--pattern",
                                      pattern, "-o", (dir / "h.json").string(), "--json"});
   ASSERT_EQ(fitted.code, 0) << fitted.err;

@@ -188,6 +188,18 @@ TEST(HeadLag, APictureTurnedByADegreeStillFitsWithinFivePercent) {
   for (double deg : {1.0, -1.0}) {
     const LagFit fit = fit_lag_from_image(turned(through_png(picture), deg), picture.pixel_mm, pattern, "scan.png");
     EXPECT_NEAR(fit.tau_s / (1.1 * head.head.tau_s), 1.0, 0.05) << deg << "°: " << fit.tau_s * 1e6 << " µs";
+    EXPECT_FALSE(fit.corners.second_order) << deg << "°: zeta " << fit.corners.zeta;
+  }
+  // The corners' fit takes the turn out with the long lines' tilt: SA14's ζ within 5 % still.
+  SimScannerOptions sa14;
+  sa14.head = head_sa14();
+  const LagPattern sa14_pattern = lag_pattern(sa14.head);
+  const GreyImage sa14_picture = photograph_lag_pattern(sa14, sa14_pattern);
+  for (double deg : {1.0, -1.0}) {
+    const LagFit fit =
+        fit_lag_from_image(turned(through_png(sa14_picture), deg), sa14_picture.pixel_mm, sa14_pattern, "scan.png");
+    EXPECT_TRUE(fit.corners.second_order) << deg << "°";
+    EXPECT_NEAR(fit.corners.zeta / sa14.head.zeta, 1.0, 0.05) << deg << "°: zeta " << fit.corners.zeta;
   }
 }
 
@@ -215,6 +227,18 @@ TEST(HeadLag, AWrongPixelSizeAMirroredPictureOrAnEmptyOneIsRefused) {
     FAIL() << "a blank picture was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("no marks"), std::string::npos) << e.what();
+  }
+  // A picture of the lines alone (a pattern marked before the corners were added), fitted with
+  // a pattern file that has them: the first corner is named, not a nonsense ζ.
+  LagPattern lines_only = pattern;
+  lines_only.corners.clear();
+  const GreyImage old = photograph_lag_pattern(head, lines_only);
+  try {
+    fit_lag_from_image(through_png(old), old.pixel_mm, pattern, "old.png");
+    FAIL() << "a picture without its corners was fitted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "'old.png': the x corner at 500 mm/s has no mark where its first leg should be: "
+                                     "not a picture of this pattern, or turned by more than 1.5°");
   }
 }
 

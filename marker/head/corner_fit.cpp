@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "base/error.hpp"
 #include "driver/sim/second_order_step.hpp"
@@ -75,13 +74,6 @@ struct MeasuredLeg {
   std::vector<double> run, centre;
 };
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(4);
-  s << v;
-  return s.str();
-}
-
 class LegReader {
  public:
   LegReader(const PlacedPicture& p, const std::string& where) : p_(p), where_(where) {}
@@ -153,7 +145,7 @@ class LegReader {
 
  private:
   [[noreturn]] void fail(const LagCorner& c, const std::string& what) const {
-    throw InputError("'" + where_ + "': the " + (c.axis == 0 ? "x" : "y") + " corner at " + num(c.speed_mm_s) +
+    throw InputError("'" + where_ + "': the " + (c.axis == 0 ? "x" : "y") + " corner at " + pattern_figure(c.speed_mm_s) +
                      " mm/s has no mark where its " + what +
                      " should be: not a picture of this pattern, or turned by more than 1.5°");
   }

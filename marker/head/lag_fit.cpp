@@ -22,13 +22,6 @@ bool extent(const std::vector<int>& counts, int min_count, int& first, int& last
   return first >= 0;
 }
 
-std::string mm(double v) {
-  std::ostringstream s;
-  s.precision(4);
-  s << v;
-  return s.str();
-}
-
 struct Line {
   double slope = 0, intercept = 0;
 };
@@ -63,8 +56,9 @@ LagFit fit_lag_from_image(const GrayImage& g, double pixel_mm, const LagPattern&
   const double seen_w = (x1 - x0 + 1) * pixel_mm, seen_h = (y1 - y0 + 1) * pixel_mm;
   const double want_w = hi.x - lo.x, want_h = hi.y - lo.y;
   if (std::abs(seen_w - want_w) > 0.05 * want_w || std::abs(seen_h - want_h) > 0.05 * want_h)
-    throw InputError("'" + where + "': the marks span " + mm(seen_w) + " × " + mm(seen_h) + " mm at " +
-                     mm(pixel_mm * 1e3) + " µm pixels, the pattern " + mm(want_w) + " × " + mm(want_h) +
+    throw InputError("'" + where + "': the marks span " + pattern_figure(seen_w) + " × " + pattern_figure(seen_h) +
+                     " mm at " + pattern_figure(pixel_mm * 1e3) + " µm pixels, the pattern " + pattern_figure(want_w) +
+                     " × " + pattern_figure(want_h) +
                      " mm (within 5 %): a wrong --pixel-um, or not a picture of this pattern");
 
   // Field mm ↔ picture pixels, placed by the box (its edges lie half a line's width outside the

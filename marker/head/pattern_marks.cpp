@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <sstream>
 
 namespace mark {
 
@@ -24,6 +25,13 @@ double otsu_threshold(const GrayImage& g) {
     if (between > best) best = between, best_i = i;
   }
   return (static_cast<double>(best_i) + 0.5) / 255.0;
+}
+
+std::string pattern_figure(double v) {
+  std::ostringstream s;
+  s.precision(4);
+  s << v;
+  return s.str();
 }
 
 PatternMarks::PatternMarks(const GrayImage& g) : g_(g), t_(otsu_threshold(g)) {

@@ -2,12 +2,17 @@
 // A picture of a test pattern seen as marks: Otsu's threshold splits it in two, and the side
 // with fewer pixels is the marks (dark marks on a light part, or light on a dark one). Shared by
 // the lag fit (the lines' ends) and the corner fit (the second legs' centres).
+#include <string>
+
 #include "marker/image/gray_image.hpp"
 
 namespace mark {
 
 // Otsu's threshold over 256 bins of 0..1: the level that best splits the picture in two.
 double otsu_threshold(const GrayImage& g);
+
+// A figure for the fits' messages: four significant digits.
+std::string pattern_figure(double v);
 
 class PatternMarks {
  public:

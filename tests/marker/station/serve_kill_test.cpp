@@ -97,7 +97,8 @@ TEST(ServeKill, SigkillMidMarkVoidsThatSerialAndTheRestartContinues) {
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     ASSERT_EQ(status.rfind("OK state=marking", 0), 0u) << status;
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    ASSERT_EQ(c.ask("STATUS").rfind("OK state=marking", 0), 0u) << "the part ended before the kill: make it longer";
+    status = c.ask("STATUS");
+    ASSERT_EQ(status.rfind("OK state=marking", 0), 0u) << "the part ended before the kill (make it longer): " << status;
     const int killed = serve.stop(SIGKILL);
     ASSERT_TRUE(WIFSIGNALED(killed));
   }

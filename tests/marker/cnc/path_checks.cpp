@@ -9,20 +9,44 @@
 
 namespace mark::test {
 
+// Beyond this many cells an element or a query is not worth the grid: a linear look instead.
+constexpr std::int64_t kNearSetMaxCells = 4096;
+
+std::int64_t NearSet::cell_of(double v) const { return static_cast<std::int64_t>(std::floor(v / cell_)); }
+
 void NearSet::add(const Element& e) {
+  const auto k = static_cast<std::uint32_t>(elements_.size());
   elements_.push_back(e);
-  boxes_.push_back(e.bounds());
+  const Box& b = boxes_.emplace_back(e.bounds());
+  const std::int64_t i0 = cell_of(b.min.x()), i1 = cell_of(b.max.x()), j0 = cell_of(b.min.y()), j1 = cell_of(b.max.y());
+  if ((i1 - i0 + 1) * (j1 - j0 + 1) > kNearSetMaxCells) {
+    wide_.push_back(k);
+    return;
+  }
+  for (std::int64_t i = i0; i <= i1; ++i)
+    for (std::int64_t j = j0; j <= j1; ++j) cells_[key(i, j)].push_back(k);
+}
+
+void NearSet::consider(std::uint32_t k, const Point& p, double& best) const {
+  const Box& b = boxes_[k];
+  if (p.x() < b.min.x() - best || p.x() > b.max.x() + best || p.y() < b.min.y() - best || p.y() > b.max.y() + best)
+    return;
+  best = std::min(best, distance_to_element(p, elements_[k]));
 }
 
 double NearSet::distance(const Point& p, double beyond) const {
   double best = beyond;
-  for (std::size_t k = 0; k < elements_.size(); ++k) {
-    const Box& b = boxes_[k];
-    if (p.x() < b.min.x() - best || p.x() > b.max.x() + best || p.y() < b.min.y() - best ||
-        p.y() > b.max.y() + best)
-      continue;
-    best = std::min(best, distance_to_element(p, elements_[k]));
+  const std::int64_t i0 = cell_of(p.x() - beyond), i1 = cell_of(p.x() + beyond);
+  const std::int64_t j0 = cell_of(p.y() - beyond), j1 = cell_of(p.y() + beyond);
+  if ((i1 - i0 + 1) * (j1 - j0 + 1) > kNearSetMaxCells) {
+    for (std::uint32_t k = 0; k < elements_.size(); ++k) consider(k, p, best);
+    return best;
   }
+  for (std::uint32_t k : wide_) consider(k, p, best);
+  for (std::int64_t i = i0; i <= i1; ++i)
+    for (std::int64_t j = j0; j <= j1; ++j)
+      if (const auto it = cells_.find(key(i, j)); it != cells_.end())
+        for (std::uint32_t k : it->second) consider(k, p, best);
   return best;
 }
 

@@ -23,7 +23,7 @@ const StrokeFont& standard() {
   return font;
 }
 
-const CircularArc& arc_of(const Element& e) {
+const CircularArc& lff_arc_of(const Element& e) {
   EXPECT_EQ(e.kind(), ElementKind::arc);
   return std::get<CircularArc>(e.geometry());
 }
@@ -68,7 +68,7 @@ TEST(LoaderLff, PercentRingIsTwoSemicircles) {
   for (const Element& e : pct.elements)
     if (e.kind() == ElementKind::arc) arcs.push_back(&e);
   ASSERT_EQ(arcs.size(), 4u);
-  const CircularArc& upper = arc_of(*arcs[0]);
+  const CircularArc& upper = lff_arc_of(*arcs[0]);
   expect_point(upper.center, 1.5, 7.5);
   EXPECT_NEAR(upper.radius, 1.5, 1e-12);
   EXPECT_NEAR(upper.sweep, kPi, 1e-12);
@@ -78,7 +78,7 @@ TEST(LoaderLff, PercentRingIsTwoSemicircles) {
   expect_point(arcs[1]->point_at(0.5), 1.5, 6);
   expect_point(arcs[1]->end(), 3, 7.5);
   // The lower ring "8,1.5;5,1.5,A1;8,1.5,A1" about (6.5, 1.5).
-  expect_point(arc_of(*arcs[2]).center, 6.5, 1.5);
+  expect_point(lff_arc_of(*arcs[2]).center, 6.5, 1.5);
   expect_point(arcs[2]->point_at(0.5), 6.5, 3);
   expect_point(arcs[3]->point_at(0.5), 6.5, 0);
   // The ring is closed and drawn without lifting the laser; two moves join the three strokes.
@@ -93,14 +93,14 @@ TEST(LoaderLff, CapitalCCornersAreClockwiseQuarterArcs) {
   const Glyph& c = standard().glyph(U'C');
   ASSERT_EQ(c.elements.size(), 5u);
   EXPECT_EQ(test::count_travel(c), 0u);
-  const CircularArc& lower = arc_of(c.elements[1]);
+  const CircularArc& lower = lff_arc_of(c.elements[1]);
   const double sweep = 4 * std::atan(-0.414214);
   EXPECT_NEAR(lower.sweep, sweep, 1e-12);
   EXPECT_NEAR(lower.sweep, -kPi / 2, 1e-5);
   expect_point(lower.center, 2, 2, 1e-5);
   EXPECT_NEAR(lower.radius, std::sqrt(8.0) / (2 * std::sin(std::abs(sweep) / 2)), 1e-12);
   expect_point(c.elements[1].point_at(0.5), 2 - std::sqrt(2.0), 2 - std::sqrt(2.0), 1e-5);
-  const CircularArc& upper = arc_of(c.elements[3]);
+  const CircularArc& upper = lff_arc_of(c.elements[3]);
   expect_point(upper.center, 2, 7, 1e-5);
   expect_point(c.elements[3].end(), 2, 9);
   EXPECT_EQ(c.advance, 7);
@@ -177,7 +177,7 @@ TEST(LoaderLff, BulgeOnTheFirstVertexIsIgnoredAndArcsEndWhereTheyShould) {
   const StrokeFont f = parse_lff(kHeader + "\n[0041] A\n0,0,A5;2,0,A1\n", "t.lff");
   const Glyph& a = f.glyph(U'A');
   ASSERT_EQ(a.elements.size(), 1u);
-  const CircularArc& arc = arc_of(a.elements[0]);
+  const CircularArc& arc = lff_arc_of(a.elements[0]);
   expect_point(arc.center, 1, 0);
   EXPECT_NEAR(arc.radius, 1, 1e-12);
   expect_point(a.elements[0].point_at(0.5), 1, -1);  // counter-clockwise from (0,0): below

@@ -14,9 +14,9 @@
 namespace mark {
 namespace {
 
-constexpr double kTick = 10e-6;
+constexpr double kLocusTick = 10e-6;
 std::vector<ScanSample> run(const std::vector<Command>& commands, std::size_t block = 4096,
-                            double tick = kTick) {
+                            double tick = kLocusTick) {
   LocusGenerator gen(commands, tick);
   std::vector<ScanSample> all;
   std::vector<ScanSample> buf(block);
@@ -139,20 +139,20 @@ TEST(Locus, ThousandElementsAccumulateNoError) {
       e = Element::arc(at - r * Point(std::cos(a0), std::sin(a0)), r, a0, sweep);
     }
     cmds.push_back(Command::mark(e, v, CommandRole::stroke));
-    ideal_ticks += e.length() / (v * kTick);
+    ideal_ticks += e.length() / (v * kLocusTick);
     total_len += e.length();
     at = e.end();
   }
   const auto s = run(cmds, 333);
   EXPECT_EQ(s.size(), static_cast<std::size_t>(std::llround(ideal_ticks)));
-  EXPECT_EQ(s.size(), LocusGenerator::count_samples(cmds, kTick));
+  EXPECT_EQ(s.size(), LocusGenerator::count_samples(cmds, kLocusTick));
 
   // Each element's last sample is its end point; the steps inside it add up to its length.
   double ideal = 0, walked = 0;
   std::size_t prev_end = 0;
   Point prev_point(0, 0);
   for (const Command& c : cmds) {
-    ideal += c.length_mm() / (c.speed_mm_s * kTick);
+    ideal += c.length_mm() / (c.speed_mm_s * kLocusTick);
     const std::size_t end = static_cast<std::size_t>(std::llround(ideal));
     ASSERT_GT(end, prev_end) << to_string(c.kind) << " len " << c.length_mm() << " v " << c.speed_mm_s;
     EXPECT_EQ(s[end - 1].x_mm, static_cast<float>(c.end().x()));

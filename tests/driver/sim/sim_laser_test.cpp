@@ -22,13 +22,13 @@ JobHeader header_with(double power_pct, double frequency_khz) {
 }
 
 // A settled jump to (−3, 0), a lit line to (3, 0) at v, a pause with the laser off.
-Stream line_at(double v) {
+Stream laser_line_at(double v) {
   Stream s;
   s.step_to({-3, 0}, 300).move({3, 0}, v, true).hold(100, false);
   return s;
 }
 
-struct Marked {
+struct LaserMarked {
   double dose;
   std::size_t lit_runs;
   double lit_length_mm;
@@ -36,14 +36,14 @@ struct Marked {
   DeviceFigures figures;
 };
 
-Marked mark(const Stream& s, const JobHeader& h, HeadModel head = head_sl10()) {
+LaserMarked mark(const Stream& s, const JobHeader& h, HeadModel head = head_sl10()) {
   SimScannerOptions o;
   o.head = head;
   SimScanner sim(o);
   sim.begin_job(h);
   sim.write(s.samples());
   const DeviceReport r = sim.end_job();
-  Marked m{sim.dose().total(), sim.lit_paths().runs.size(), 0, sim.pulses(), r.figures};
+  LaserMarked m{sim.dose().total(), sim.lit_paths().runs.size(), 0, sim.pulses(), r.figures};
   for (const auto& run : sim.lit_paths().runs)
     for (std::size_t i = 1; i < run.size(); ++i) m.lit_length_mm += norm(run[i] - run[i - 1]);
   return m;
@@ -57,10 +57,10 @@ double figure(const DeviceFigures& f, const std::string& name) {
 }
 
 TEST(SimLaser, DoseIsProportionalToThePensPower) {
-  const Stream s = line_at(1000);
-  const Marked full = mark(s, header_with(100, 30));
-  const Marked half = mark(s, header_with(50, 30));
-  const Marked tenth = mark(s, header_with(10, 30));
+  const Stream s = laser_line_at(1000);
+  const LaserMarked full = mark(s, header_with(100, 30));
+  const LaserMarked half = mark(s, header_with(50, 30));
+  const LaserMarked tenth = mark(s, header_with(10, 30));
   // 6 mm at 1000 mm/s: 6 ms lit at full power.
   EXPECT_NEAR(full.dose, 6e-3, 1e-8);
   EXPECT_NEAR(half.dose / full.dose, 0.5, 0.005);
@@ -78,7 +78,7 @@ TEST(SimLaser, DoseIsProportionalToThePensPower) {
 
 TEST(SimLaser, PulsesLandVOverFApart) {
   // 1000 mm/s at 30 kHz: 33.3 µm, 17 % overlap on the 40 µm spot (dynamics.md §4.2).
-  const Marked m = mark(line_at(1000), header_with(100, 30));
+  const LaserMarked m = mark(laser_line_at(1000), header_with(100, 30));
   EXPECT_NEAR(m.pulses.spacing_max_um, 1000.0 / 30, 0.01);
   EXPECT_NEAR(m.pulses.overlap(), 1 - (1000.0 / 30) / 40, 1e-3);
   EXPECT_FALSE(m.pulses.separate_dots());
@@ -91,21 +91,21 @@ TEST(SimLaser, PulsesLandVOverFApart) {
   EXPECT_NEAR(figure(m.figures, "pulse_overlap_fraction"), m.pulses.overlap(), 1e-12);
 
   // 400 mm/s at 20 kHz: 20 µm apart, half overlapping.
-  const Marked slow = mark(line_at(400), header_with(100, 20));
+  const LaserMarked slow = mark(laser_line_at(400), header_with(100, 20));
   EXPECT_NEAR(slow.pulses.spacing_max_um, 20, 0.01);
   EXPECT_NEAR(slow.pulses.overlap(), 0.5, 1e-3);
 }
 
 TEST(SimLaser, PulsesFurtherApartThanTheSpotAreSeparateDots) {
   // 2000 mm/s at 30 kHz: 66.7 µm apart on a 40 µm spot — a dotted line.
-  const Marked m = mark(line_at(2000), header_with(100, 30));
+  const LaserMarked m = mark(laser_line_at(2000), header_with(100, 30));
   EXPECT_NEAR(m.pulses.spacing_max_um, 2000.0 / 30, 0.02);
   EXPECT_NEAR(m.pulses.overlap(), 1 - (2000.0 / 30) / 40, 1e-3);
   EXPECT_TRUE(m.pulses.separate_dots());
   // The same speed on a head with a 70 µm spot overlaps again.
   HeadModel wide = head_sl10();
   wide.spot_diameter_um = 70;
-  const Marked w = mark(line_at(2000), header_with(100, 30), wide);
+  const LaserMarked w = mark(laser_line_at(2000), header_with(100, 30), wide);
   EXPECT_NEAR(w.pulses.overlap(), 1 - (2000.0 / 30) / 70, 1e-3);
   EXPECT_FALSE(w.pulses.separate_dots());
 }
@@ -115,7 +115,7 @@ TEST(SimLaser, EachLitRunStartsItsOwnPulseTrain) {
   Stream s;
   s.step_to({-3, 0}, 300).move({-1, 0}, 1000, true).move({1, 0}, 1000, false).move({3, 0}, 1000, true)
       .hold(100, false);
-  const Marked m = mark(s, header_with(100, 50));
+  const LaserMarked m = mark(s, header_with(100, 50));
   EXPECT_NEAR(m.pulses.spacing_max_um, 20, 0.01);  // not the 2 mm jump
 }
 

@@ -16,12 +16,12 @@ namespace {
 
 using test::Stream;
 
-struct Trace {
+struct ValidationTrace {
   std::vector<double> t;
   std::vector<Vec2> p;
 };
 
-SimScanner make_sim(HeadModel head, Trace& trace, int substeps = 10) {
+SimScanner make_sim(HeadModel head, ValidationTrace& trace, int substeps = 10) {
   SimScannerOptions o;
   o.head = std::move(head);
   o.substeps = substeps;
@@ -35,7 +35,7 @@ SimScanner make_sim(HeadModel head, Trace& trace, int substeps = 10) {
 
 // Mean lag behind the commanded ramp x = v·t, after 15 τ of settling.
 void expect_ramp_lag(const HeadModel& head, double v_mm_s) {
-  Trace tr;
+  ValidationTrace tr;
   SimScanner sim = make_sim(head, tr);
   const double len = std::min(40.0, v_mm_s * 40 * head.tau_s);
   Stream s;
@@ -61,7 +61,7 @@ TEST(SimValidation, RampLagIsTauTimesSpeed) {
 }
 
 // Last time the beam is further than `band` from `target` (settling time), from t = 0.
-double settle_time(const Trace& tr, Vec2 target, double band) {
+double settle_time(const ValidationTrace& tr, Vec2 target, double band) {
   double last = 0;
   for (std::size_t i = 0; i < tr.t.size(); ++i)
     if (norm(tr.p[i] - target) > band) last = tr.t[i];
@@ -81,7 +81,7 @@ TEST(SimValidation, StepSettleTimesWithTheConservativeAccelerations) {
                         Case{head_cheap(), 0.640, 1.940},
                         Case{head_sa14(), 0.399, 1.380}}) {
     for (double share : {0.01, 0.1}) {
-      Trace tr;
+      ValidationTrace tr;
       SimScanner sim = make_sim(c.head, tr);
       const double step = share * c.head.field_mm;
       Stream s;
@@ -101,7 +101,7 @@ TEST(SimValidation, StepSettleTimesWithTheConservativeAccelerations) {
 // Closest approach of the beam to a 90° corner at the origin, approached along +x at v and
 // left along +y, with `pause_ticks` of the command resting on the corner.
 double corner_miss(const HeadModel& h, double v, int pause_ticks) {
-  Trace tr;
+  ValidationTrace tr;
   SimScanner sim = make_sim(h, tr, 20);
   Stream s;
   s.step_to({-10, 0}, 400).move({0, 0}, v, true).hold(pause_ticks, true).move({0, 10}, v, true);
@@ -134,7 +134,7 @@ TEST(SimValidation, SecondOrderModelKeepsTheRampLagAndOvershootsByZeta) {
   h.zeta = 0.7;
   expect_ramp_lag(h, 1000);
   // Small step (no limit active): ζ = 0.7 overshoots by exp(−πζ/√(1−ζ²)) = 4.6 %.
-  Trace tr;
+  ValidationTrace tr;
   SimScanner sim = make_sim(h, tr);
   Stream s;
   s.step_to({0.2, 0}, 200);

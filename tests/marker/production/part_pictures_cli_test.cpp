@@ -34,7 +34,7 @@ constexpr const char* kTwoObjects = R"({
   ]
 })";
 
-struct Box {
+struct InkBox {
   double x0 = 1e9, y0 = 1e9, x1 = -1e9, y1 = -1e9;
   bool empty() const { return x0 > x1; }
   void add(double x, double y) {
@@ -74,13 +74,13 @@ struct PartPicturesCli : testing::Test {
   }
   std::string path(const std::string& name) const { return (dir / name).string(); }
   // The objects' layout boxes (stroke centre lines) as `job check` computes them.
-  std::vector<Box> layout_boxes() {
+  std::vector<InkBox> layout_boxes() {
     const auto r = run_cli({"job", "check", job, "--json"});
     EXPECT_EQ(r.code, 0) << r.err;
-    std::vector<Box> boxes;
+    std::vector<InkBox> boxes;
     const nlohmann::json check = nlohmann::json::parse(r.out);
     for (const auto& o : check["objects"]) {
-      Box b;
+      InkBox b;
       b.add(o["bounds_mm"]["x_min"], o["bounds_mm"]["y_min"]);
       b.add(o["bounds_mm"]["x_max"], o["bounds_mm"]["y_max"]);
       boxes.push_back(b);
@@ -108,21 +108,21 @@ TEST_F(PartPicturesCli, TwoPartsWriteFilesNamedByTheirSerialsThatDifferWhereTheS
 
   // The part itself (--dose-png): ink inside both objects' layout boxes, grown by the spot's
   // radius (SL10: 40 µm) and two pixels; none outside them.
-  const std::vector<Box> boxes = layout_boxes();
+  const std::vector<InkBox> boxes = layout_boxes();
   ASSERT_EQ(boxes.size(), 2u);
   const GrayImage d = png(path("d-000041.png"));
   const double px = parts[0]["dose_px_um"].get<double>() / 1000, x0 = parts[0]["dose_x0_mm"], top = parts[0]["dose_top_mm"];
   const double grow = 0.020 + 2 * px;
   std::vector<std::size_t> inside(boxes.size(), 0);
   std::size_t outside = 0;
-  Box sn_ink, lot_ink;
+  InkBox sn_ink, lot_ink;
   for (int y = 0; y < d.height; ++y)
     for (int x = 0; x < d.width; ++x) {
       if (d.at(x, y) >= 0.5f) continue;
       const double fx = x0 + x * px, fy = top - y * px;
       bool in_any = false;
       for (std::size_t k = 0; k < boxes.size(); ++k) {
-        const Box& bx = boxes[k];
+        const InkBox& bx = boxes[k];
         if (fx >= bx.x0 - grow && fx <= bx.x1 + grow && fy >= bx.y0 - grow && fy <= bx.y1 + grow) {
           ++inside[k], in_any = true;
           (k == 0 ? sn_ink : lot_ink).add(fx, fy);
@@ -152,18 +152,18 @@ TEST_F(PartPicturesCli, TwoPartsWriteFilesNamedByTheirSerialsThatDifferWhereTheS
     return col >= 0 && row >= 0 && col < g.width && row < g.height && g.at(static_cast<int>(col), static_cast<int>(row)) < 0.5f;
   };
   // The last digit's box: the right quarter of the serial's box, grown as above.
-  const Box& sn = boxes[0];
-  Box digit;
+  const InkBox& sn = boxes[0];
+  InkBox digit;
   digit.add(sn.x1 - 0.25 * (sn.x1 - sn.x0), sn.y0 - grow);
   digit.add(sn.x1 + grow, sn.y1 + grow);
-  const auto ink_in = [&](const GrayImage& g, double gpx, double gx0, double gtop, const Box& b, const Box* but) {
+  const auto ink_in = [&](const GrayImage& g, double gpx, double gx0, double gtop, const InkBox& b, const InkBox* but) {
     std::size_t n = 0;
     for (double fy = b.y0; fy <= b.y1; fy += px)
       for (double fx = b.x0; fx <= b.x1; fx += px)
         if (!(but && fx >= but->x0 && fy >= but->y0 && fy <= but->y1) && inked(g, gpx, gx0, gtop, fx, fy)) ++n;
     return static_cast<double>(n);
   };
-  Box lot = boxes[1], sn_grown = sn;
+  InkBox lot = boxes[1], sn_grown = sn;
   lot.add(lot.x0 - grow, lot.y0 - grow), lot.add(lot.x1 + grow, lot.y1 + grow);
   sn_grown.add(sn.x0 - grow, sn.y0 - grow), sn_grown.add(sn.x1 + grow, sn.y1 + grow);
   // The lot's ink and the serial's but its last digit agree within 2 % ("LOT 7" and "SN 00004"
@@ -179,7 +179,7 @@ TEST_F(PartPicturesCli, TwoPartsWriteFilesNamedByTheirSerialsThatDifferWhereTheS
   // Where the last digit is the ink is as much but not in the same place: over 30 % of it is
   // inked on one part and not the other (52 % measured), against under 1 % on the lot (3 pixels
   // of 8886 measured: the same text, started from where a different serial ended).
-  const auto xor_in = [&](const Box& b) {
+  const auto xor_in = [&](const InkBox& b) {
     std::size_t n = 0;
     for (double fy = b.y0; fy <= b.y1; fy += px)
       for (double fx = b.x0; fx <= b.x1; fx += px) n += inked(d, px, x0, top, fx, fy) != inked(d2, px2, x02, top2, fx, fy);
@@ -196,7 +196,7 @@ TEST_F(PartPicturesCli, TraceSpansBothObjectsInsideTheField) {
   std::string header;
   std::getline(in, header);
   EXPECT_EQ(header, "t_s,cmd_x_mm,cmd_y_mm,laser,beam_x_mm,beam_y_mm");
-  const std::vector<Box> boxes = layout_boxes();
+  const std::vector<InkBox> boxes = layout_boxes();
   ASSERT_EQ(boxes.size(), 2u);
   std::size_t rows = 0, lit_sn = 0, lit_lot = 0;
   double last_t = -1, field_half = 55;  // the job's field is 110 mm: laser-on rows within ±55 mm
@@ -210,7 +210,7 @@ TEST_F(PartPicturesCli, TraceSpansBothObjectsInsideTheField) {
     last_t = t;
     if (!laser) continue;
     in_field = in_field && std::abs(cx) <= field_half && std::abs(cy) <= field_half;
-    const auto in = [&](const Box& b) { return cx >= b.x0 - 0.1 && cx <= b.x1 + 0.1 && cy >= b.y0 - 0.1 && cy <= b.y1 + 0.1; };
+    const auto in = [&](const InkBox& b) { return cx >= b.x0 - 0.1 && cx <= b.x1 + 0.1 && cy >= b.y0 - 0.1 && cy <= b.y1 + 0.1; };
     lit_sn += in(boxes[0]) ? 1 : 0;
     lit_lot += in(boxes[1]) ? 1 : 0;
   }

@@ -17,7 +17,7 @@ namespace {
 
 // Two objects: a short serial with a full-power pen, a longer lot line with a half-power pen at
 // a lower frequency.
-constexpr const char* kJob = R"({
+constexpr const char* kPartRunJob = R"({
   "format": "marker-job/1",
   "head": "SL10",
   "time_zone": "UTC",
@@ -40,7 +40,7 @@ struct PartStation {
   std::unique_ptr<SerialStore> store;
   MarkContext context;
 
-  explicit PartStation(const std::string& text = kJob)
+  explicit PartStation(const std::string& text = kPartRunJob)
       : job(parse_job(text, "line.json")),
         fonts(job),
         store(open_store((dir / "line.serials.sqlite").string(), StoreAccess::create)) {
@@ -228,7 +228,7 @@ TEST(PartRun, AFailingDeviceRecordsThePartFailed) {
 }
 
 TEST(PartRun, ARefusedPartConsumesNothing) {
-  std::string text = kJob;
+  std::string text = kPartRunJob;
   text.replace(text.find("\"x_mm\": -20, \"y_mm\": 3"), 22, "\"x_mm\": 45, \"y_mm\": 3");
   PartStation st(text);
   SimScanner sim(st.sim_options());
@@ -282,7 +282,7 @@ TEST(PartRun, ABoardGetsEachObjectsPen) {
 }
 
 TEST(PartRun, PensOnASampleDeviceShareItsClock) {
-  std::string text = kJob;
+  std::string text = kPartRunJob;
   text.replace(text.find("\"power_pct\": 50"), 15, "\"power_pct\": 50, \"tick_us\": 5");
   PartStation st(text);
   SimScanner sim(st.sim_options());

@@ -36,7 +36,7 @@ float grain_at(std::int64_t gx, std::int64_t gy, std::uint32_t seed) {
   return (sum - 2.0f) * 1.7320508f;
 }
 
-void require(const char* what, double v, double lo, double hi) {
+void require_look(const char* what, double v, double lo, double hi) {
   if (std::isfinite(v) && v >= lo && v <= hi) return;
   throw std::invalid_argument(std::string("part look: ") + what + " " + std::to_string(v) + " is outside " +
                               std::to_string(lo) + " .. " + std::to_string(hi));
@@ -45,10 +45,10 @@ void require(const char* what, double v, double lo, double hi) {
 }  // namespace
 
 void check_part_look(const PartLook& l) {
-  require("bare reflectance", l.bare_reflectance, 0.001, 1);
-  require("mark reflectance", l.mark_reflectance, 0.001, 1);
-  require("tone ratio", l.tone_ratio, 1.01, 1000);
-  require("grain (%)", l.grain_pct, 0, 50);
+  require_look("bare reflectance", l.bare_reflectance, 0.001, 1);
+  require_look("mark reflectance", l.mark_reflectance, 0.001, 1);
+  require_look("tone ratio", l.tone_ratio, 1.01, 1000);
+  require_look("grain (%)", l.grain_pct, 0, 50);
 }
 
 PartLook dark_part_look(PartLook look) {

@@ -11,7 +11,7 @@ namespace {
 using namespace ClipperLib;
 
 constexpr double kInnerArcTolMm = 0.005;
-constexpr double kCleanNm = 500;  // drop vertices this close to their neighbours' line
+constexpr double kPocketCleanNm = 500;  // drop vertices this close to their neighbours' line
 
 // One connected piece of an eroded region: its outer boundary and holes.
 struct Component {
@@ -76,7 +76,7 @@ std::vector<PocketLoop> pocket_loops(const Paths& region, double stepover_mm, do
     if (comps.size() == before) break;
     first_of_level.push_back(before);
     PolyTreeToPaths(tree, level_paths);
-    CleanPolygons(level_paths, kCleanNm);
+    CleanPolygons(level_paths, kPocketCleanNm);
     // Hang each new component under the component of the previous level that holds it.
     if (level > 0)
       for (std::size_t k = before; k < comps.size(); ++k)

@@ -9,10 +9,10 @@
 namespace mark {
 namespace {
 
-constexpr const char* kFormat1 = "marker-store/1";
-constexpr const char* kFormat2 = "marker-store/2";
+constexpr const char* kPgFormat1 = "marker-store/1";
+constexpr const char* kPgFormat2 = "marker-store/2";
 
-constexpr const char* kTables1 = R"SQL(
+constexpr const char* kPgTables1 = R"SQL(
 CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);
 CREATE TABLE IF NOT EXISTS counters(
   name TEXT PRIMARY KEY, next_value BIGINT NOT NULL, used BIGINT NOT NULL,
@@ -48,7 +48,7 @@ CREATE OR REPLACE TRIGGER outcomes_no_truncate BEFORE TRUNCATE ON outcomes
 )SQL";
 
 // Version 2 (see sqlite_schema.cpp for what each part is for).
-constexpr const char* kTables2 = R"SQL(
+constexpr const char* kPgTables2 = R"SQL(
 ALTER TABLE marks ADD COLUMN IF NOT EXISTS reason TEXT NOT NULL DEFAULT '';
 ALTER TABLE marks ADD COLUMN IF NOT EXISTS note TEXT NOT NULL DEFAULT '';
 ALTER TABLE marks ADD COLUMN IF NOT EXISTS data_list TEXT;
@@ -71,7 +71,7 @@ CREATE OR REPLACE TRIGGER data_rows_no_truncate BEFORE TRUNCATE ON data_rows
   FOR EACH STATEMENT EXECUTE FUNCTION marker_append_only();
 )SQL";
 
-constexpr const char* kBackfill2 = R"SQL(
+constexpr const char* kPgBackfill2 = R"SQL(
 INSERT INTO marked_texts(text, object, mark_id)
   SELECT o->>'text', o->>'name', m.id FROM marks m, json_array_elements(m.objects::json) o
   WHERE m.kind = 'mark' AND m.serials <> '{}' ORDER BY m.id ON CONFLICT DO NOTHING
@@ -81,7 +81,7 @@ using Params = std::vector<std::optional<std::string>>;
 
 std::string num(std::int64_t v) { return std::to_string(v); }
 
-std::string audit_select(int version) {
+std::string pg_audit_select(int version) {
   return std::string("SELECT m.id, m.time_utc, m.station, m.job, m.job_sha256, m.kind, m.remark_of, "
                      "m.objects, m.serials, ") +
          (version >= 2 ? "m.reason, m.note, m.data_list, m.data_row, " : "'', '', NULL, NULL, ") +
@@ -93,7 +93,7 @@ std::string audit_select(int version) {
 
 // The query and its parameters, numbered in order of use (PostgreSQL types every parameter,
 // so none may go unused).
-std::pair<std::string, Params> audit_query(const AuditFilter& f, int version) {
+std::pair<std::string, Params> pg_audit_query(const AuditFilter& f, int version) {
   Params params;
   const auto param = [&](std::string v) {
     params.push_back(std::move(v));
@@ -117,7 +117,7 @@ std::pair<std::string, Params> audit_query(const AuditFilter& f, int version) {
       add("EXISTS (SELECT 1 FROM json_array_elements(m.objects::json) j WHERE j->>'text' = " + t + ")");
   }
   if (!f.job.empty()) add("m.job = " + param(f.job));
-  std::string sql = audit_select(version) + where;
+  std::string sql = pg_audit_select(version) + where;
   if (f.limit)
     sql = "SELECT * FROM (" + sql + " ORDER BY m.id DESC LIMIT " + param(num(*f.limit)) + "::bigint) recent ORDER BY 1";
   else
@@ -155,12 +155,12 @@ class PgReading : public Base {
   PgReading(PgConn& c, int version) : c_(c), version_(version) {}
 
   void audit(const AuditFilter& f, const std::function<bool(const AuditRow&)>& row) override {
-    const auto [sql, params] = audit_query(f, version_);
+    const auto [sql, params] = pg_audit_query(f, version_);
     c_.stream(sql, params, [&](const PgResult& r) { return row(decode(r, 0, c_.describe())); });
   }
 
   std::optional<AuditRow> audit_row(std::int64_t id) override {
-    const PgResult r = c_.run(audit_select(version_) + "WHERE m.id = $1", {num(id)});
+    const PgResult r = c_.run(pg_audit_select(version_) + "WHERE m.id = $1", {num(id)});
     if (r.rows() != 1) return std::nullopt;
     return decode(r, 0, c_.describe());
   }
@@ -330,7 +330,7 @@ class PgTransaction final : public PgReading<StoreTransaction> {
   bool done_ = false;
 };
 
-std::string new_store_id() {
+std::string pg_new_store_id() {
   std::random_device rd;
   static constexpr char kHex[] = "0123456789abcdef";
   std::string id;
@@ -407,10 +407,10 @@ class PgBackend final : public StoreBackend {
     return f.rows() ? f.text(0, 0) : "";
   }
   int version_of(const std::string& f) {
-    if (f == kFormat2) return 2;
-    if (f == kFormat1) return 1;
-    throw StoreError("serial store " + describe() + " has format '" + f + "', this program reads " + kFormat1 +
-                     " and " + kFormat2);
+    if (f == kPgFormat2) return 2;
+    if (f == kPgFormat1) return 1;
+    throw StoreError("serial store " + describe() + " has format '" + f + "', this program reads " + kPgFormat1 +
+                     " and " + kPgFormat2);
   }
   void read_store_id() {
     const PgResult id = conn_->run("SELECT value FROM meta WHERE key = 'store_id'");
@@ -437,16 +437,16 @@ class PgBackend final : public StoreBackend {
     try {
       // Stations starting together must not race to create the tables: one at a time.
       conn_->run("SET LOCAL statement_timeout = 0; SELECT pg_advisory_xact_lock(7403, 1)");
-      conn_->run(kTables1);
+      conn_->run(kPgTables1);
       const PgResult cur = conn_->run("SELECT value FROM meta WHERE key = 'format'");
       const int version = cur.rows() ? version_of(cur.text(0, 0)) : 0;
       if (version < 2) {
-        conn_->run(kTables2);
-        if (version == 1) conn_->run(kBackfill2);
+        conn_->run(kPgTables2);
+        if (version == 1) conn_->run(kPgBackfill2);
         conn_->run("INSERT INTO meta(key, value) VALUES('format', $1) ON CONFLICT (key) DO UPDATE SET value = $1",
-                   {std::string(kFormat2)});
+                   {std::string(kPgFormat2)});
         conn_->run("INSERT INTO meta(key, value) VALUES('store_id', $1) ON CONFLICT (key) DO NOTHING",
-                   {new_store_id()});
+                   {pg_new_store_id()});
       }
       conn_->run("COMMIT");
     } catch (...) {

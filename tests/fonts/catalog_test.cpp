@@ -19,7 +19,9 @@ namespace fs = std::filesystem;
 class TwinFonts : public testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / "marker_catalog_test";
+    // A folder per test: CTest runs this suite's two tests at once, in two processes.
+    dir_ = fs::temp_directory_path() / "marker_catalog_test" /
+           testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     fs::copy_file(test::kDataDir + "/rowmans_wrapped.jhf", dir_ / "twin.jhf");

@@ -44,17 +44,31 @@ inline std::filesystem::path use_station_state(const std::filesystem::path& dir)
   return state / "marker";
 }
 
+// `folder` under the temporary directory, narrowed to the running test (Suite.Name): CTest runs
+// every test in a process of its own, two at a time, so a folder two tests shared was emptied by
+// one while the other wrote into it.
+inline std::filesystem::path per_test_temp_dir(const std::string& folder) {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / folder;
+  if (const auto* info = testing::UnitTest::GetInstance()->current_test_info()) {
+    std::string name = std::string(info->test_suite_name()) + "." + info->name();
+    for (char& c : name)
+      if (c == '/') c = '_';
+    dir /= name;
+  }
+  return dir;
+}
+
 // A per-test temporary folder, empty.
 inline std::filesystem::path fresh_temp_dir(const std::string& folder) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / folder;
+  const std::filesystem::path dir = per_test_temp_dir(folder);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
 }
 
-// A path in a per-suite temporary folder, with no file there yet.
+// A path in the test's temporary folder, with no file there yet.
 inline std::filesystem::path fresh_temp_file(const std::string& folder, const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / folder;
+  const std::filesystem::path dir = per_test_temp_dir(folder);
   std::filesystem::create_directories(dir);
   std::filesystem::remove(dir / name);
   return dir / name;

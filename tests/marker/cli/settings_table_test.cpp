@@ -272,7 +272,8 @@ std::string run_error(const std::vector<std::string>& args) {
 
 // The command each table's options are given to, with its required arguments.
 std::vector<std::string> command_for(const std::string& flag) {
-  if (flag == "--spot" || flag == "--passes") return {"job", "new", "-o", "x.json", "--text", "A"};
+  if (flag == "--spot" || flag == "--passes")
+    return {"job", "new", "-o", test::fresh_temp_file("marker_settings_table", "x.json").string(), "--text", "A"};
   return {"mark", "A"};
 }
 

@@ -42,7 +42,7 @@ slow_filter() {
 realtime='JobSafety.*:LmcEmulatedCli.*:ServeKill.*:JobEndToEnd.RealTimeMatchesVirtualTime'
 realtime+=':StationTcp.AbortMidMark*:StationHttp.AbortMidMark*:StationHttp.TcpAndHttpClientsSeeTheSameStation'
 realtime+=':StationModbus.StartWhileBusy*:StationModbus.MultipleCoilWriteActsInAddressOrder'
-realtime+=':BoardIoStation.AnEdgeWhileMarking*'
+realtime+=':BoardIoStation.AnEdgeWhileMarking*:InterruptScope.*'
 
 run_suite() {
   local suite=$1 f=$filter shards=${MARKER_ASAN_SHARDS:-2} status=0 t0 alone=

@@ -27,9 +27,9 @@ namespace {
 using test::Served;
 
 // A libmodbus client on 127.0.0.1:`port`, or from `from` (a socket bound to that address).
-class Client {
+class ModbusClient {
  public:
-  explicit Client(int port, const char* from = nullptr) : ctx_(modbus_new_tcp("127.0.0.1", port)) {
+  explicit ModbusClient(int port, const char* from = nullptr) : ctx_(modbus_new_tcp("127.0.0.1", port)) {
     if (!from) {
       ok_ = modbus_connect(ctx_) == 0;
       return;
@@ -48,7 +48,7 @@ class Client {
     ok_ = ::connect(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) == 0;
     modbus_set_socket(ctx_, fd);
   }
-  ~Client() {
+  ~ModbusClient() {
     modbus_close(ctx_);
     modbus_free(ctx_);
   }
@@ -120,7 +120,7 @@ TEST(StationModbus, PymodbusStartsMarksAndReadsTheSerialTheStoreHolds) {
 // Real time: a part is slow enough to see busy, refuse a second start and abort it.
 TEST(StationModbus, StartWhileBusyIsRefusedAndAbortEndsThePartAborted) {
   Served s(false);
-  Client c(s.modbus_port());
+  ModbusClient c(s.modbus_port());
   ASSERT_TRUE(c.connected());
   EXPECT_EQ(c.inputs(), (std::array<std::uint8_t, kInputCount>{1, 0, 0, 0}));  // ready
   ASSERT_EQ(c.write_coil(kCoilStart, true), 0);
@@ -147,7 +147,7 @@ TEST(StationModbus, StartWhileBusyIsRefusedAndAbortEndsThePartAborted) {
 // brings it back to ready.
 TEST(StationModbus, ResetCoilLeavesError) {
   Served s(true, 8, "fault@50");
-  Client c(s.modbus_port());
+  ModbusClient c(s.modbus_port());
   ASSERT_EQ(c.write_coil(kCoilStart, true), 0);
   s.station->wait_idle();
   EXPECT_EQ(c.inputs(), (std::array<std::uint8_t, kInputCount>{0, 0, 0, 1}));  // error
@@ -165,7 +165,7 @@ TEST(StationModbus, ResetCoilLeavesError) {
 // Frames outside the map get the protocol's exceptions and start nothing.
 TEST(StationModbus, BadRequestsAnswerExceptionsAndChangeNothing) {
   Served s;
-  Client c(s.modbus_port());
+  ModbusClient c(s.modbus_port());
   std::uint8_t bits[8];
   std::uint16_t words[8];
   EXPECT_EQ(modbus_read_bits(c.ctx(), 0, 4, bits), -1);  // coil 3 does not exist
@@ -199,7 +199,7 @@ TEST(StationModbus, BadRequestsAnswerExceptionsAndChangeNothing) {
 // Write Multiple Coils 0–2 in one frame acts in address order: start, then abort.
 TEST(StationModbus, MultipleCoilWriteActsInAddressOrder) {
   Served s(false);
-  Client c(s.modbus_port());
+  ModbusClient c(s.modbus_port());
   const std::uint8_t start_abort[] = {1, 1, 0};
   ASSERT_EQ(modbus_write_bits(c.ctx(), 0, 3, start_abort), 3);
   s.station->wait_idle();
@@ -212,9 +212,9 @@ TEST(StationModbus, PeerOutsideTheAllowListIsClosedUnread) {
   Served s;
   ModbusServer guarded(*s.station, parse_host_port("127.0.0.1:0", "--modbus"),
                        {parse_allowed_net("10.20.0.0/16", "--modbus-allow")}, 8);
-  Client local(guarded.port());  // 127.0.0.1: the machine's own, always allowed
+  ModbusClient local(guarded.port());  // 127.0.0.1: the machine's own, always allowed
   EXPECT_EQ(local.inputs()[kInputReady], 1);
-  Client outside(guarded.port(), "127.0.0.2");
+  ModbusClient outside(guarded.port(), "127.0.0.2");
   if (!outside.bindable()) GTEST_SKIP() << "127.0.0.2 does not bind here; PeerAllow.* test the matcher";
   std::uint16_t words[kRegisterCount];
   EXPECT_EQ(modbus_read_input_registers(outside.ctx(), 0, kRegisterCount, words), -1);
@@ -222,7 +222,7 @@ TEST(StationModbus, PeerOutsideTheAllowListIsClosedUnread) {
   EXPECT_EQ(s.station->status().parts, 0u);
   ModbusServer allowing(*s.station, parse_host_port("127.0.0.1:0", "--modbus"),
                         {parse_allowed_net("127.0.0.2", "--modbus-allow")}, 8);
-  Client inside(allowing.port(), "127.0.0.2");
+  ModbusClient inside(allowing.port(), "127.0.0.2");
   EXPECT_EQ(inside.inputs()[kInputReady], 1);
 }
 
@@ -230,15 +230,15 @@ TEST(StationModbus, PeerOutsideTheAllowListIsClosedUnread) {
 // frees its place.
 TEST(StationModbus, OneClientOverTheLimitIsClosed) {
   Served s(true, 2);
-  auto a = std::make_unique<Client>(s.modbus_port());
-  Client b(s.modbus_port());
+  auto a = std::make_unique<ModbusClient>(s.modbus_port());
+  ModbusClient b(s.modbus_port());
   EXPECT_EQ(a->inputs()[kInputReady], 1);
   EXPECT_EQ(b.inputs()[kInputReady], 1);
-  Client third(s.modbus_port());
+  ModbusClient third(s.modbus_port());
   std::uint8_t bit = 0;
   EXPECT_EQ(modbus_read_input_bits(third.ctx(), 0, 1, &bit), -1);
   a.reset();  // its FIN is queued on loopback before the next connect: the server sees it first
-  Client fourth(s.modbus_port());
+  ModbusClient fourth(s.modbus_port());
   EXPECT_EQ(fourth.inputs()[kInputReady], 1);
 }
 

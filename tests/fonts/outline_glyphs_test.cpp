@@ -7,6 +7,8 @@
 // once.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <set>
 #include <thread>
@@ -153,30 +155,48 @@ void expect_contract(const Glyph& g, const std::string& what) {
   }
 }
 
-TEST(OutlineFont, EveryGlyphOfRealAndFixtureFontsKeepsTheContract) {
+// The installed DejaVu Sans and Liberation Sans and every fixture a loader accepts: one test
+// per font, so a sharded run (scripts/asan.sh) spreads the two large fonts over its processes.
+std::vector<std::string> contract_fonts() {
   std::vector<std::string> fonts = {kDejaVu, kLiberation};
+  std::vector<std::string> fixtures;
   for (const auto& entry : std::filesystem::directory_iterator(kOutlineDir)) {
     const std::string stem = entry.path().stem().string();
     const bool refused = stem.find("height") != std::string::npos || stem == "no_glyphs";
     if ((entry.path().extension() == ".ttf" || entry.path().extension() == ".otf") && !refused)
-      fonts.push_back(entry.path().string());
+      fixtures.push_back(entry.path().string());
   }
-  for (const std::string& path : fonts) {
-    const StrokeFont f = load_outline_font(path);
-    std::size_t largest = 0, total = 0;
-    std::set<const Glyph*> made;
-    for (char32_t cp : f.code_points()) {
-      const Glyph& g = f.glyph(cp);
-      if (!made.insert(&g).second) continue;  // a glyph shared by several code points: checked once
-      expect_contract(g, path + " " + describe_code_point(cp));
-      largest = std::max(largest, g.elements.size());
-      total += g.elements.size();
-      if (HasFailure()) return;
-    }
-    std::printf("%s: %zu code points, %zu glyphs made, %zu elements, largest glyph %zu\n", path.c_str(),
-                f.size(), made.size(), total, largest);
-  }
+  std::sort(fixtures.begin(), fixtures.end());  // the directory's order is the file system's
+  fonts.insert(fonts.end(), fixtures.begin(), fixtures.end());
+  return fonts;
 }
+
+class EveryGlyph : public testing::TestWithParam<std::string> {};
+
+TEST_P(EveryGlyph, KeepsTheContract) {
+  const std::string& path = GetParam();
+  const StrokeFont f = load_outline_font(path);
+  std::size_t largest = 0, total = 0;
+  std::set<const Glyph*> made;
+  for (char32_t cp : f.code_points()) {
+    const Glyph& g = f.glyph(cp);
+    if (!made.insert(&g).second) continue;  // a glyph shared by several code points: checked once
+    expect_contract(g, path + " " + describe_code_point(cp));
+    largest = std::max(largest, g.elements.size());
+    total += g.elements.size();
+    if (HasFailure()) return;
+  }
+  std::printf("%s: %zu code points, %zu glyphs made, %zu elements, largest glyph %zu\n", path.c_str(),
+              f.size(), made.size(), total, largest);
+}
+
+INSTANTIATE_TEST_SUITE_P(RealAndFixtureFonts, EveryGlyph, testing::ValuesIn(contract_fonts()),
+                         [](const testing::TestParamInfo<std::string>& info) {
+                           std::string name = std::filesystem::path(info.param).stem().string();
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name;
+                         });
 
 TEST(OutlineFont, FontsWithoutGlyphsOrAUsableHeightAreRefusedNamingTheFile) {
   const std::string range = "is no usable standard height (allowed 0.01 .. 10 em)";

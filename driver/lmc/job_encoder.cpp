@@ -102,6 +102,8 @@ void JobEncoder::start_list(double open_mo_delay_s, std::uint16_t port_bits) {
   on_delay_.reset(), off_delay_.reset(), polygon_.reset(), jump_delay_.reset();
   jump_delay_s_ = polygon_s_ = polygon_worst_s_ = 0;
   in_run_ = false;
+  timed_ = false;
+  tick_debt_ = 0;
   pen_ = nullptr;
   push(word(Op::ReadyMark));
   if (open_mo_delay_s > 0) {
@@ -242,12 +244,29 @@ void JobEncoder::add_timed(const DeviceCommand& c) {
   const double ticks = std::max(1.0, std::round(c.duration_s / kTick_s));
   const bool lit = c.op == DeviceOp::mark;
   if (lit && pen_) set_power(c.power_fraction);
+  // On a board whose words take a tick (set_word_ticks), the move gives back what is owed, this
+  // move's own speed and delay words included (counted before they are sent, as they would be
+  // sent for the full-length move); a miscount by a word is settled by the moves after, since
+  // the debt is kept from the words actually sent. A debt below zero lengthens the next move.
+  const auto owed = [&](double words_to_come) {
+    if (!word_ticks_ || !timed_) return 0.0;
+    return std::min(tick_debt_ + words_to_come, ticks - 1);
+  };
   if (to[0] == at_[0] && to[1] == at_[1]) {
-    hold(ticks, lit);
+    const double paid = owed(0);
+    hold(ticks - paid, lit);
+    tick_debt_ -= paid;
+    timed_ = true;  // the first timed command's words delay the whole job alike: not owed
     return;
   }
-  const std::uint16_t v =
-      timed_speed_word(segment_length(at_, to), ticks, units_, lit ? "mark speed" : "blanking line speed");
+  const double length = segment_length(at_, to);
+  const char* what = lit ? "mark speed" : "blanking line speed";
+  std::uint16_t v = timed_speed_word(length, ticks, units_, what);
+  const double paid =
+      owed(lit ? double(mark_speed_ != v)
+               : double(jump_speed_ != v) + double(jump_delay_ != std::array<std::uint16_t, 2>{0, 0}));
+  if (paid != 0) v = timed_speed_word(length, ticks - paid, units_, what);
+  tick_debt_ -= paid;
   bool corner = false;
   if (lit) {
     if (mark_speed_ != v) send_mark_speed(v);
@@ -259,6 +278,7 @@ void JobEncoder::add_timed(const DeviceCommand& c) {
     set_jump_delay({0, 0});
   }
   push_move(lit ? Op::MarkTo : Op::JumpTo, to, v, corner);
+  timed_ = true;  // the first timed move's words delay the whole job alike: not owed
 }
 
 void JobEncoder::set_power(double fraction) {

@@ -117,11 +117,24 @@ class JobEncoder {
   // The mirrors' position as the encoder last left it (new device: the field centre).
   void set_position(std::array<std::uint16_t, 2> at) { at_ = at; }
   bool in_mark_run() const { return in_run_; }
+  // The board spends a tick on every word that is not a move (`marker lmc probe`: "a parameter
+  // word takes a tick"; the emulated board's word_ticks): the estimate counts those ticks, and
+  // timed moves give them back — each move after the first is shortened by the ticks the words
+  // since the move before it took, down to one tick of its own, the rest owed by the moves
+  // after — so the board's clock stays the host's and feed-forward's timing holds.
+  void set_word_ticks(bool on) { word_ticks_ = on; }
 
  private:
   void push(const Word& c, double estimated_s = 0, double unverified_s = 0) {
     if (packet_.full()) flush_full();
     packet_.push(c);
+    if (word_ticks_) [[unlikely]] {
+      const Op op = static_cast<Op>(c.opcode());
+      if (op != Op::JumpTo && op != Op::MarkTo && op != Op::EndOfList) {
+        estimated_s += kTick_s;
+        if (timed_) tick_debt_ += 1;
+      }
+    }
     packet_estimate_s_ += estimated_s;
     packet_unverified_s_ += unverified_s;
   }
@@ -160,6 +173,9 @@ class JobEncoder {
   const BoardPen* pen_ = nullptr;
   std::array<std::uint16_t, 2> at_{0x8000, 0x8000};
   bool in_run_ = false;
+  bool word_ticks_ = false;  // set_word_ticks
+  bool timed_ = false;       // a timed move went out in this list: words after it are owed
+  double tick_debt_ = 0;     // ticks the board spent on words that no move has given back yet
   // What the board has now (nullopt: unknown, send it).
   // The speed words the board has; kUnknown after a new list (sent again).
   static constexpr std::uint32_t kUnknown = 0x10000;

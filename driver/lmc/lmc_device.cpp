@@ -38,6 +38,7 @@ LmcDevice::LmcDevice(std::unique_ptr<LmcLink> link, LmcOptions options)
       link_(std::move(link)),
       session_(*link_, options_.session, lifecycle_.abort_flag()),
       encoder_(units_, [this](const ListPacket& p, const PacketInfo& i) { send_packet(p, i); }) {
+  encoder_.set_word_ticks(options_.word_ticks);
   const auto bit_ok = [](int b) { return b >= 0 && b < 16; };
   if (!bit_ok(options_.laser_port_bit) || !bit_ok(options_.red_pointer_bit) ||
       options_.laser_port_bit == options_.red_pointer_bit)

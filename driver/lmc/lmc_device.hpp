@@ -45,6 +45,9 @@ struct LmcOptions {
   // µs with the sign flag, as galvoplotter and balor send it (meerk40t since 2025: 10 µs);
   // `marker lmc probe` measures which one a board takes.
   PolygonDelayUnit polygon_delay_unit = PolygonDelayUnit::signed_us;
+  // The board spends a tick on every word that is not a move (`marker lmc probe` measures it):
+  // the host then counts those ticks and timed moves give them back (JobEncoder::set_word_ticks).
+  bool word_ticks = false;
   int laser_port_bit = 0;              // output port bit that enables the laser
   int red_pointer_bit = 8;             // output port bit of the red pointer
   double open_mo_delay_s = 0.008;      // DelayTime after opening the master oscillator

@@ -349,7 +349,9 @@ ProbeReport probe_board(LmcLink& link, const ProbeOptions& o, const std::functio
                     ? fmt("DelayTime takes %.1f µs more than its own time per word (a tick of its own)", r.delay_time_extra_us)
                     : fmt("DelayTime takes its own time (%.1f µs more per word)", r.delay_time_extra_us));
   out.push_back(r.parameter_word_tick
-                    ? fmt("a parameter word takes %.1f µs (a tick) of list time", r.parameter_word_us)
+                    ? fmt("a parameter word takes %.1f µs (a tick) of list time: use --word-ticks, so look-ahead and "
+                          "feed-forward's timed moves give those ticks back",
+                          r.parameter_word_us)
                     : fmt("parameter words take no list time (%.1f µs per word)", r.parameter_word_us));
   out.push_back(fmt("a move of %.1f ticks took %.2f: ", r.move_ticks_exact, r.move_ticks_measured) +
                 (r.move_rounding == "whole (up)" ? "whole ticks, rounded up"

@@ -19,6 +19,7 @@ void add_lmc_options(CLI::App& app, LmcArgs& a) {
   add_setting(app, kLaserBit, a.laser_bit);
   add_setting(app, kRedBit, a.red_bit);
   add_setting(app, kPolygonDelayUnits, a.polygon_unit);
+  add_setting(app, kWordTicks, a.word_ticks);
   add_setting(app, kChordTolerance, a.chord_tolerance_um);
 }
 
@@ -34,6 +35,7 @@ lmc::LmcOptions to_lmc_options(const LmcArgs& a, double field_mm) {
   o.red_pointer_bit = a.red_bit;
   o.polygon_delay_unit = a.polygon_unit == "us" ? lmc::PolygonDelayUnit::signed_us
                                                 : lmc::PolygonDelayUnit::ten_us;
+  o.word_ticks = a.word_ticks;
   if (!a.cor_file.empty()) o.correction = lmc::read_cor_file(a.cor_file);
   return o;
 }

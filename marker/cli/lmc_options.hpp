@@ -18,6 +18,7 @@ struct LmcArgs {
   int laser_bit = static_cast<int>(*kLaserBit.value);
   int red_bit = static_cast<int>(*kRedBit.value);
   std::string polygon_unit{kPolygonDelayUnits.value};
+  bool word_ticks = kWordTicks.on;
   double chord_tolerance_um = *kChordTolerance.value;
 };
 

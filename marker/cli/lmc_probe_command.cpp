@@ -63,7 +63,7 @@ nlohmann::ordered_json report_json(const std::string& device, const lmc::ProbeRe
         {"estimated_s", r.list_estimated_s},
         {"measured_s", r.list_measured_s},
         {"ratio", r.list_estimated_s > 0 ? r.list_measured_s / r.list_estimated_s : 0}}},
-      {"settings", {{"polygon_delay_units", r.polygon_units_option}}},
+      {"settings", {{"polygon_delay_units", r.polygon_units_option}, {"word_ticks", r.parameter_word_tick}}},
       {"conclusions", r.conclusions},
       {"lists", lists},
   };

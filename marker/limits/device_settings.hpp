@@ -28,6 +28,10 @@ inline constexpr Choice kPolygonDelayUnits{
      "LMC: PolygonDelay encoding: us (galvoplotter, balor) or 10us (meerk40t since 2025); "
      "`marker lmc probe` measures which a board takes"},
     "us, 10us", "us"};
+inline constexpr Toggle kWordTicks{
+    {"--word-ticks", "",
+     "LMC: the board spends a tick on every word that is not a move (`marker lmc probe`: \"a parameter word "
+     "takes a tick\"); timed moves then give those ticks back"}};
 // Below 0.5 µm a chord is shorter than the board's 16-bit field step on any lens.
 inline constexpr Quantity kChordTolerance{
     {"--chord-tolerance", "", "LMC: arcs become chords within this distance"}, {0.5, 1000, "µm"}, 5};
@@ -43,12 +47,13 @@ inline constexpr Toggle kNoOrientationMark{
 
 // What only an LMC board reads (a real one, its capture or the emulated one), not the simulated
 // scanner.
-inline constexpr SettingRef kLmcSettingList[] = {&kCorrectionFile, &kSwapXy,  &kFlipX,             &kFlipY,
-                                                 &kLaserBit,       &kRedBit,  &kPolygonDelayUnits, &kChordTolerance};
+inline constexpr SettingRef kLmcSettingList[] = {&kCorrectionFile, &kSwapXy, &kFlipX,             &kFlipY,
+                                                 &kLaserBit,       &kRedBit, &kPolygonDelayUnits, &kWordTicks,
+                                                 &kChordTolerance};
 
 inline constexpr SettingRef kDeviceSettingList[] = {
     &kDevice,  &kProbeDevice, &kCorrectionFile,    &kSwapXy,         &kFlipX,      &kFlipY,
-    &kLaserBit, &kRedBit, &kPolygonDelayUnits, &kChordTolerance, &kFrameShape, &kFrameSpeed, &kFrameLaps,
+    &kLaserBit, &kRedBit, &kPolygonDelayUnits, &kWordTicks, &kChordTolerance, &kFrameShape, &kFrameSpeed, &kFrameLaps,
     &kNoOrientationMark};
 inline constexpr SettingTable kDeviceSettings{"device", "Device", "", kDeviceSettingList};
 

@@ -15,7 +15,8 @@ namespace mark::lmc {
 namespace {
 
 // The words of a job of `commands` with the golden pen's laser (100 %, 20 kHz) and no delays.
-std::vector<Word> encode_timed(const std::vector<DeviceCommand>& commands, BoardPen* pen_out = nullptr) {
+std::vector<Word> encode_timed(const std::vector<DeviceCommand>& commands, BoardPen* pen_out = nullptr,
+                               bool word_ticks = false) {
   const FieldUnits units(110);
   std::vector<Word> words;
   JobEncoder enc(units, [&](const ListPacket& p, const PacketInfo&) {
@@ -25,6 +26,7 @@ std::vector<Word> encode_timed(const std::vector<DeviceCommand>& commands, Board
   dp.laser_on_delay_s = dp.laser_off_delay_s = dp.polygon_delay_s = dp.mark_delay_s = 0;
   const BoardPen pen = encode_pen(dp, 0, units);
   if (pen_out) *pen_out = pen;
+  enc.set_word_ticks(word_ticks);
   enc.start_list(0, 1);
   enc.apply_pen(pen);
   for (std::size_t i = 0; i < commands.size(); ++i) enc.add(commands[i], i);
@@ -33,8 +35,10 @@ std::vector<Word> encode_timed(const std::vector<DeviceCommand>& commands, Board
 }
 
 // Runs the words on a hand-driven board (plain axes, the output recorded tick by tick).
-std::vector<ScanSample> run_on_board(const std::vector<Word>& words) {
-  test::Rig rig(test::Rig::plain());
+std::vector<ScanSample> run_on_board(const std::vector<Word>& words, bool word_ticks = false) {
+  BoardOptions options = test::Rig::plain();
+  options.behaviour.word_ticks = word_ticks;
+  test::Rig rig(options);
   rig.arm();
   for (std::size_t at = 0; at < words.size(); at += kCommandsPerPacket) {
     const std::vector<Word> packet(words.begin() + static_cast<std::ptrdiff_t>(at),
@@ -91,6 +95,39 @@ TEST(LmcTimedMoves, EachMoveTakesItsTicksAtItsPowerAndAStillOneHolds) {
   }
   EXPECT_TRUE(held);
   EXPECT_TRUE(jump_delay_zero);
+}
+
+// A board whose every word but a move takes a tick (the emulated word_ticks): told so, the
+// encoder gives each timed move back the ticks of the words since the move before (its power,
+// speed and delay words; the hold's own word), so from the first move on every move ends on the
+// host's tick as on a plain board. Not told, each later move ends a tick late per word.
+TEST(LmcTimedMoves, OnABoardWhoseWordsTakeATickEachMoveGivesTheirTicksBack) {
+  using C = DeviceCommand;
+  const std::vector<C> commands = {C::timed_move(true, 1.0, 0, 2000, 50e-5, 0.5),
+                                   C::timed_move(true, 1.0, 0, 0, 20e-5, 0.25),
+                                   C::timed_move(false, 1.0, 0.8, 2162, 37e-5),
+                                   C::timed_move(true, 3.5, 0.8, 751, 333e-5, 1.0)};
+  const double unit_mm = 1 / FieldUnits(110).units_per_mm();
+  // The ticks the moves end on, counted from the first lit tick: where the first reaches x = 1,
+  // where the dark one reaches y = 0.8, the last sample. (A word's own tick holds the mirrors.)
+  const auto ends = [&](const std::vector<ScanSample>& s) {
+    std::size_t first = 0;
+    while (first < s.size() && !s[first].laser) ++first;
+    std::size_t at_x = first, at_y = first;
+    while (at_x < s.size() && s[at_x].x_mm < 1.0 - unit_mm) ++at_x;
+    while (at_y < s.size() && s[at_y].y_mm < 0.8 - unit_mm) ++at_y;
+    return std::vector<std::size_t>{at_x + 1 - first, at_y + 1 - first, s.size() - first};
+  };
+  const std::vector<ScanSample> plain = run_on_board(encode_timed(commands));
+  const std::vector<ScanSample> told = run_on_board(encode_timed(commands, nullptr, true), true);
+  const std::vector<ScanSample> untold = run_on_board(encode_timed(commands), true);
+  // Plain: the first move ends at 50, the hold to 70, the dark move at 107, the last at 440.
+  EXPECT_EQ(ends(plain), (std::vector<std::size_t>{50, 107, 440}));
+  EXPECT_EQ(ends(told), ends(plain));
+  EXPECT_NEAR(told.back().x_mm, 3.5, unit_mm);
+  // Untold: the dark move ends 3 ticks late (the hold's power word, the hold's own word, the
+  // jump speed; the pen's jump delay is already 0), the last move 5 (its power and speed words).
+  EXPECT_EQ(ends(untold), (std::vector<std::size_t>{50, 110, 445}));
 }
 
 TEST(LmcTimedMoves, ASlowShortMoveTakesNoMoreThanItsTicks) {

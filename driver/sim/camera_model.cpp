@@ -1,4 +1,5 @@
 #include "driver/sim/camera_model.hpp"
+#include "driver/sim/param_range.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +10,7 @@
 namespace mark {
 namespace {
 
-void require(const char* what, double v, double lo, double hi) {
-  if (std::isfinite(v) && v >= lo && v <= hi) return;
-  throw std::invalid_argument(std::string("camera: ") + what + " " + std::to_string(v) + " is outside " +
-                              std::to_string(lo) + " .. " + std::to_string(hi));
-}
+void require(const char* what, double v, double lo, double hi) { require_param_range("camera", what, v, lo, hi); }
 
 // A normalised Gaussian sampled at whole pixels out to 3σ.
 std::vector<float> gaussian(double sigma_px) {

@@ -1,8 +1,8 @@
 #include "driver/sim/mark_response.hpp"
+#include "driver/sim/param_range.hpp"
 
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
 namespace mark {
@@ -11,10 +11,7 @@ namespace {
 double peak(double speed_mm_s, double w) { return std::sqrt(2 / std::numbers::pi) / (w * speed_mm_s); }
 
 void require(const char* what, double v, double lo, double hi, const char* unit) {
-  if (std::isfinite(v) && v >= lo && v <= hi) return;
-  std::ostringstream s;
-  s << what << " " << v << " " << unit << " is outside " << lo << " .. " << hi << " " << unit;
-  throw std::invalid_argument(s.str());
+  require_param_range("", what, v, lo, hi, unit);
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "driver/sim/part_image.hpp"
+#include "driver/sim/param_range.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,9 +38,7 @@ float grain_at(std::int64_t gx, std::int64_t gy, std::uint32_t seed) {
 }
 
 void require_look(const char* what, double v, double lo, double hi) {
-  if (std::isfinite(v) && v >= lo && v <= hi) return;
-  throw std::invalid_argument(std::string("part look: ") + what + " " + std::to_string(v) + " is outside " +
-                              std::to_string(lo) + " .. " + std::to_string(hi));
+  require_param_range("part look", what, v, lo, hi);
 }
 
 }  // namespace

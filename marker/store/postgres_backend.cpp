@@ -4,13 +4,12 @@
 #include <set>
 
 #include "marker/store/pg_conn.hpp"
+#include "marker/store/store_format.hpp"
 #include "marker/store/row_codec.hpp"
 
 namespace mark {
 namespace {
 
-constexpr const char* kPgFormat1 = "marker-store/1";
-constexpr const char* kPgFormat2 = "marker-store/2";
 
 constexpr const char* kPgTables1 = R"SQL(
 CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);
@@ -406,12 +405,7 @@ class PgBackend final : public StoreBackend {
     const PgResult f = conn_->run("SELECT value FROM meta WHERE key = 'format'");
     return f.rows() ? f.text(0, 0) : "";
   }
-  int version_of(const std::string& f) {
-    if (f == kPgFormat2) return 2;
-    if (f == kPgFormat1) return 1;
-    throw StoreError("serial store " + describe() + " has format '" + f + "', this program reads " + kPgFormat1 +
-                     " and " + kPgFormat2);
-  }
+  int version_of(const std::string& f) { return store_format_version(describe(), f); }
   void read_store_id() {
     const PgResult id = conn_->run("SELECT value FROM meta WHERE key = 'store_id'");
     store_id_ = id.rows() ? id.text(0, 0) : "";
@@ -444,7 +438,7 @@ class PgBackend final : public StoreBackend {
         conn_->run(kPgTables2);
         if (version == 1) conn_->run(kPgBackfill2);
         conn_->run("INSERT INTO meta(key, value) VALUES('format', $1) ON CONFLICT (key) DO UPDATE SET value = $1",
-                   {std::string(kPgFormat2)});
+                   {std::string(kStoreFormat2)});
         conn_->run("INSERT INTO meta(key, value) VALUES('store_id', $1) ON CONFLICT (key) DO NOTHING",
                    {pg_new_store_id()});
       }

@@ -2,11 +2,10 @@
 
 #include <random>
 
+#include "marker/store/store_format.hpp"
+
 namespace mark {
 namespace {
-
-constexpr const char* kFormat1 = "marker-store/1";
-constexpr const char* kFormat2 = "marker-store/2";
 
 // Version 1's tables, as stores of that version have them.
 constexpr const char* kTables1 = R"SQL(
@@ -106,13 +105,7 @@ bool has_table(const SqliteDb& db, const char* name) {
   return s.step();
 }
 
-int version_of(const SqliteDb& db, const std::string& format) {
-  if (format == kFormat2) return 2;
-  if (format == kFormat1) return 1;
-  throw StoreError("serial store " + db.name() + " has format '" + format + "', this program reads " +
-                       kFormat1 + " and " + kFormat2,
-                   StoreErrorKind::other);
-}
+int version_of(const SqliteDb& db, const std::string& format) { return store_format_version(db.name(), format); }
 
 }  // namespace
 
@@ -127,7 +120,7 @@ SqliteFormat create_or_upgrade(const SqliteDb& db) {
       db.exec(kColumns2);
       db.exec(kTables2);
       if (f.version == 1) db.exec(kBackfill2);
-      put_meta(db, "format", kFormat2);
+      put_meta(db, "format", kStoreFormat2);
       put_meta(db, "store_id", new_store_id());
       f.version = 2;
     }

@@ -112,13 +112,17 @@ TEST(LmcEmulatedCli, ThePensPowerIsCountedOnceInTheDose) {
 
 // The robust feed-forward pen of `cps --short` (SL10, the plant set's "high" row, 1410 mm/s),
 // through the board as timed moves and directly on the simulator, on two plants.
+// The robust feed-forward pen of `cps --short` (SL10, 1410 mm/s, look-ahead and feed-forward).
+std::vector<std::string> robust_ff_pen() {
+  return {"--head", "SL10", "--corner", "none", "--speed", "1410", "--jump-speed", "9600", "--tick", "10",
+          "--laser-on-delay-us", "0", "--laser-off-delay-us", "0", "--lookahead", "--accel", "2200000",
+          "--jump-accel", "18612000", "--curve-accel", "2200000", "--accel-limit", "44000000", "--junction-dv", "100",
+          "--laser-switch-speed", "0", "--min-lit-speed", "141", "--ff-lag-us", "120", "--source", "fiber",
+          "--frequency", "45"};
+}
+
 TEST(LmcEmulatedCli, FeedForwardRunsOnTheBoardAsTimedMoves) {
-  const std::vector<std::string> pen{
-      "--head", "SL10", "--corner", "none", "--speed", "1410", "--jump-speed", "9600", "--tick", "10",
-      "--laser-on-delay-us", "0", "--laser-off-delay-us", "0", "--lookahead", "--accel", "2200000",
-      "--jump-accel", "18612000", "--curve-accel", "2200000", "--accel-limit", "44000000", "--junction-dv", "100",
-      "--laser-switch-speed", "0", "--min-lit-speed", "141", "--ff-lag-us", "120", "--source", "fiber",
-      "--frequency", "45"};
+  const std::vector<std::string> pen = robust_ff_pen();
   for (const char* plant : {"", "dead_us=10"}) {
     auto on = [&](const char* device) {
       std::vector<std::string> a{"mark", "ABCDEFGHIJKLMNOPQRSTUVWXYZ", "--height", "1", "--align", "center",
@@ -157,12 +161,7 @@ TEST(LmcEmulatedCli, FeedForwardRunsOnTheBoardAsTimedMoves) {
 // after it, and the path there lags by a tick: 13 capitals 5.19 against 2.58 µm, cps's 62
 // characters 3.98 against 2.87).
 TEST(LmcEmulatedCli, WordTicksGivesBackTheTicksABoardSpendsOnWords) {
-  const std::vector<std::string> pen{
-      "--head", "SL10", "--corner", "none", "--speed", "1410", "--jump-speed", "9600", "--tick", "10",
-      "--laser-on-delay-us", "0", "--laser-off-delay-us", "0", "--lookahead", "--accel", "2200000",
-      "--jump-accel", "18612000", "--curve-accel", "2200000", "--accel-limit", "44000000", "--junction-dv", "100",
-      "--laser-switch-speed", "0", "--min-lit-speed", "141", "--ff-lag-us", "120", "--source", "fiber",
-      "--frequency", "45"};
+  const std::vector<std::string> pen = robust_ff_pen();
   auto on = [&](const char* device, bool word_ticks) {
     std::vector<std::string> a{"mark", "ABCDEFGHIJKLM", "--height", "1", "--align", "center",
                                "--virtual-time", "--device", device, "--json"};

@@ -51,15 +51,17 @@ std::vector<ScanSample> run_on_board(const std::vector<Word>& words, bool word_t
   return rig.sink.samples;
 }
 
-TEST(LmcTimedMoves, EachMoveTakesItsTicksAtItsPowerAndAStillOneHolds) {
+// 1 mm lit in 50 ticks at half power; 20 ticks held lit at a quarter; a dark move of 0.8 mm in
+// 37 ticks; 2.5 mm lit in 333 ticks (4.47 units a tick: no speed word is exactly that) at full
+// power.
+std::vector<DeviceCommand> four_moves() {
   using C = DeviceCommand;
-  // 1 mm lit in 50 ticks at half power; 20 ticks held lit at a quarter; a dark move of 0.8 mm
-  // in 37 ticks; 2.5 mm lit in 333 ticks (4.47 units a tick: no speed word is exactly that) at
-  // full power.
-  const std::vector<C> commands = {C::timed_move(true, 1.0, 0, 2000, 50e-5, 0.5),
-                                   C::timed_move(true, 1.0, 0, 0, 20e-5, 0.25),
-                                   C::timed_move(false, 1.0, 0.8, 2162, 37e-5),
-                                   C::timed_move(true, 3.5, 0.8, 751, 333e-5, 1.0)};
+  return {C::timed_move(true, 1.0, 0, 2000, 50e-5, 0.5), C::timed_move(true, 1.0, 0, 0, 20e-5, 0.25),
+          C::timed_move(false, 1.0, 0.8, 2162, 37e-5), C::timed_move(true, 3.5, 0.8, 751, 333e-5, 1.0)};
+}
+
+TEST(LmcTimedMoves, EachMoveTakesItsTicksAtItsPowerAndAStillOneHolds) {
+  const std::vector<DeviceCommand> commands = four_moves();
   BoardPen pen;
   const std::vector<Word> words = encode_timed(commands, &pen);
   const std::vector<ScanSample> s = run_on_board(words);
@@ -102,11 +104,7 @@ TEST(LmcTimedMoves, EachMoveTakesItsTicksAtItsPowerAndAStillOneHolds) {
 // speed and delay words; the hold's own word), so from the first move on every move ends on the
 // host's tick as on a plain board. Not told, each later move ends a tick late per word.
 TEST(LmcTimedMoves, OnABoardWhoseWordsTakeATickEachMoveGivesTheirTicksBack) {
-  using C = DeviceCommand;
-  const std::vector<C> commands = {C::timed_move(true, 1.0, 0, 2000, 50e-5, 0.5),
-                                   C::timed_move(true, 1.0, 0, 0, 20e-5, 0.25),
-                                   C::timed_move(false, 1.0, 0.8, 2162, 37e-5),
-                                   C::timed_move(true, 3.5, 0.8, 751, 333e-5, 1.0)};
+  const std::vector<DeviceCommand> commands = four_moves();
   const double unit_mm = 1 / FieldUnits(110).units_per_mm();
   // The ticks the moves end on, counted from the first lit tick: where the first reaches x = 1,
   // where the dark one reaches y = 0.8, the last sample. (A word's own tick holds the mirrors.)

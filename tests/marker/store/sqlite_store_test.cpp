@@ -248,6 +248,35 @@ TEST_F(StoreFixture, TheAuditLogIsAppendOnly) {
   sqlite3_close(db);
 }
 
+// A store of a format this program does not know (a newer program's) is refused naming the
+// store, its format and the formats read (store_format.hpp, both backends), and left as it was.
+TEST_F(StoreFixture, AStoreOfAnUnknownFormatIsRefusedAndLeftAsItWas) {
+  store.reset();
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, "UPDATE meta SET value = 'marker-store/9' WHERE key = 'format'", nullptr, nullptr, nullptr),
+            SQLITE_OK)
+      << sqlite3_errmsg(db);
+  sqlite3_close(db);
+  try {
+    auto again = open_store(path, StoreAccess::existing);
+    again->start_station(context());
+    FAIL() << "a store of format marker-store/9 was opened";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("has format 'marker-store/9', this program reads marker-store/1 and "
+                                         "marker-store/2"),
+              std::string::npos)
+        << e.what();
+  }
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  sqlite3_stmt* q = nullptr;
+  ASSERT_EQ(sqlite3_prepare_v2(db, "SELECT value FROM meta WHERE key = 'format'", -1, &q, nullptr), SQLITE_OK);
+  ASSERT_EQ(sqlite3_step(q), SQLITE_ROW);
+  EXPECT_STREQ(reinterpret_cast<const char*>(sqlite3_column_text(q, 0)), "marker-store/9");
+  sqlite3_finalize(q);
+  sqlite3_close(db);
+}
+
 TEST_F(StoreFixture, MissingStoreIsAnErrorWhenNotCreating) {
   EXPECT_THROW(open_store((dir / "nope.sqlite").string(), StoreAccess::existing), StoreError);
   EXPECT_FALSE(std::filesystem::exists(dir / "nope.sqlite"));

@@ -3,7 +3,8 @@
 // producer feeds the line memory. Jobs: the 62 characters of the cps test at 5 mm (blanking pen,
 // 1 m/s: lines, circular and elliptical arcs), the same text in italics (every arc an ellipse),
 // one kind of element alone, and the text with planned speeds (look-ahead, power ∝ speed) with
-// and without feed-forward of a first- and a second-order head model.
+// and without feed-forward of a first- and a second-order head model, and fed forward through a
+// ZV input shaper at 10 kHz (seven taps per sample on top of the second-order terms).
 #include <benchmark/benchmark.h>
 
 #include <numbers>
@@ -35,7 +36,7 @@ std::vector<Command> text_job(double italic_deg) {
 }
 
 // The text planned with look-ahead on SL10 (the datasheet model), optionally fed forward.
-Plan planned_text_job(double italic_deg, bool feed_forward, bool second_order) {
+Plan planned_text_job(double italic_deg, bool feed_forward, bool second_order, double shaper_hz = 0) {
   const Figure f = text_figure(italic_deg);
   HeadModel head = head_sl10();
   head.second_order = second_order;
@@ -43,7 +44,9 @@ Plan planned_text_job(double italic_deg, bool feed_forward, bool second_order) {
   r.lookahead = true;
   r.feed_forward = feed_forward;
   // 1 m/s as the constant-speed jobs above, so both have the same element mix per sample.
-  return plan_figure(f, pen_for_head(head, CornerStrategy::none, 1000, 10e-6, r));
+  Pen pen = pen_for_head(head, CornerStrategy::none, 1000, 10e-6, r);
+  pen.shaper_hz = shaper_hz;
+  return plan_figure(f, pen);
 }
 
 void run_plan(benchmark::State& state, const Plan& plan) {
@@ -99,6 +102,11 @@ void BM_LocusTextFeedForwardSecondOrder(benchmark::State& state) {
   run_plan(state, planned_text_job(0, true, true));
 }
 BENCHMARK(BM_LocusTextFeedForwardSecondOrder)->Unit(benchmark::kMillisecond);
+
+void BM_LocusTextFeedForwardShaped(benchmark::State& state) {
+  run_plan(state, planned_text_job(0, true, false, 10000));
+}
+BENCHMARK(BM_LocusTextFeedForwardShaped)->Unit(benchmark::kMillisecond);
 
 void BM_LocusItalicTextFeedForward(benchmark::State& state) {
   run_plan(state, planned_text_job(15, true, false));

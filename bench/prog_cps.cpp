@@ -22,12 +22,16 @@
 // `head identify --from-image`): what a user who identifies the head in front of them gets, the
 // lag error of a datasheet gone and the effects the fit cannot see left.
 //
+// The strategy none+ff+zv is none+ff through an input shaper tuned to the set's 10 kHz mirror
+// resonance (marker/plan/input_shaper.hpp); it runs on SL10 only, in the exact row and the
+// set's rows.
+//
 // Every pen gets the pulse frequency its speed needs for the spots of consecutive pulses to
 // overlap (the quality classes see gaps between them), within the laser source's range
 // (`--source`, default fiber); a speed that would need more than the source runs is not
 // reachable with that source.
 //
-//   cps [--short] [--json] [--head NAME] [--strategy NAME] [--workers N] [--source NAME]
+//   cps [--short] [--json] [--head NAME] [--strategy NAME] [--workers N] [--source NAME] [--max-frequency KHZ]
 //   cps --speed MM_S [--head NAME] [--strategy NAME] [--text T] [--font F]
 // --speed evaluates one speed with each strategy's default parameters instead of searching.
 #include <CLI/CLI.hpp>
@@ -95,9 +99,14 @@ struct Strategy {
   // Further starting points besides the parameters' initial values (a pattern search finds a
   // local optimum; gentle and brisk starts find the robust and the fast one).
   std::vector<std::vector<double>> starts = {};
+  // Input shaping against this mirror resonance (0: none): the robust set's 10 kHz, which the
+  // user is taken to know (a datasheet, or the ringing in the test pattern's mark).
+  double shaper_hz = 0;
 };
 
 const Param kSpeed{"speed_mm_s", 300, 20, 20000, false};
+// The mirror resonance of the robust set (kRobustPlants).
+constexpr double kRobustResonance_hz = 10000;
 
 std::vector<Strategy> all_strategies() {
   const Param accel{"accel_share", 0.3, 0.005, 0.95, false};
@@ -125,6 +134,11 @@ std::vector<Strategy> all_strategies() {
        {{"speed_mm_s", 1000, 20, 20000, false}, accel, curve, jump,
         {"min_lit_speed_share", 0.03, 0.005, 0.5, true}},
        {{2000, 0.9, 0.9, 0.9, 0.03}, {2000, 0.1, 0.05, 0.3, 0.15}, {1000, 0.05, 0.05, 0.3, 0.1}}},
+      {"none+ff+zv", CornerStrategy::none, true, true,
+       {{"speed_mm_s", 1000, 20, 20000, false}, accel, curve, jump,
+        {"min_lit_speed_share", 0.03, 0.005, 0.5, true}},
+       {{5000, 0.27, 0.27, 0.36, 0.1}, {2000, 0.1, 0.05, 0.3, 0.15}},
+       kRobustResonance_hz},
       {"blanking+ff", CornerStrategy::blanking, true, true,
        {kSpeed, accel, curve, jump, {"run_in", 1.0, 0.1, 10, true}, {"run_out", 1.0, 0.1, 10, true}},
        {{1000, 0.3, 0.3, 0.8, 2, 1}, {300, 0.05, 0.05, 0.3, 3, 1}}},
@@ -156,7 +170,9 @@ Pen pen_at(const Strategy& s, const std::vector<double>& x, const HeadProfile& m
   if (auto v = get("curve_accel_share")) r.curve_accel_share = *v;
   if (auto v = get("jump_accel_share")) r.jump_accel_share = *v;
   if (auto v = get("min_lit_speed_share")) r.min_lit_speed_share = *v;
-  return pen_for_profile(model, s.corner, x[0], kTick_s, r);
+  Pen pen = pen_for_profile(model, s.corner, x[0], kTick_s, r);
+  pen.shaper_hz = s.shaper_hz;
+  return pen;
 }
 
 // The text laid out once; its intended strokes indexed once for every trial.
@@ -202,10 +218,19 @@ LaserSource g_source = LaserSource::fiber;
 // one beam diameter wide at this speed, the same for every pen (0: each pen's own power / speed).
 double g_material_speed_mm_s = 0;
 
+// --max-frequency: a source that tops out below its kind's range (a 100 kHz Q-switched fiber
+// laser: --source fiber --max-frequency 100). 0: the kind's own top.
+double g_max_frequency_khz = 0;
+
+// The top of the rows' source.
+double source_max_khz() {
+  const double top = limits_of(g_source).max_frequency_khz;
+  return g_max_frequency_khz > 0 ? std::min(top, g_max_frequency_khz) : top;
+}
+
 // Whole kHz within the source's range.
 double within_source(double khz) {
-  const SourceLimits& s = limits_of(g_source);
-  return std::clamp(std::ceil(khz - 1e-9), s.min_frequency_khz, s.max_frequency_khz);
+  return std::clamp(std::ceil(khz - 1e-9), limits_of(g_source).min_frequency_khz, source_max_khz());
 }
 
 // The frequency a pen at `speed` starts from: spots kPulsePitchShare of a diameter apart.
@@ -247,7 +272,7 @@ const std::vector<std::string> kRobustPlants = {"",
                                                 "tau_scale=0.9",
                                                 "tau_scale=1.1",
                                                 "dead_us=10",
-                                                "resonance_hz=10000",
+                                                "resonance_hz=10000",  // kRobustResonance_hz
                                                 "noise_um=1",
                                                 "backemf_speed=12000",
                                                 "rms_accel_pct=40,thermal_tau_s=0.02"};
@@ -483,7 +508,7 @@ int main(int argc, char** argv) {
   app.add_flag("--json", json, "print the rows as JSON (docs/speed.md lists the fields)");
   app.add_option("--head", head_name, "only this head (SL10, SL14, cheap, SA14)");
   app.add_option("--strategy", strategy_name,
-                 "only this strategy (blanking, delays, none, none+la, none+ff, blanking+ff)");
+                 "only this strategy (blanking, delays, none, none+la, none+ff, none+ff+zv, blanking+ff)");
   app.add_option("--workers", workers, "searches run in parallel (each a producer and a drain thread)");
   app.add_option("--speed", speed, "evaluate this marking speed with default parameters only (mm/s)");
   app.add_option("--text", text, "mark this text instead (diagnosis)");
@@ -491,6 +516,9 @@ int main(int argc, char** argv) {
   std::string source_name = "fiber";
   app.add_option("--source", source_name,
                  "laser source whose frequency range the pulses are searched in: " + laser_source_names());
+  app.add_option("--max-frequency", g_max_frequency_khz,
+                 "the source's top pulse frequency, below its kind's (kHz; a 100 kHz Q-switched fiber: --max-frequency 100)")
+      ->check(CLI::Range(1.0, 4000.0));
   app.add_option("--material-speed", g_material_speed_mm_s,
                  "judge dose per mm against a material a single full-power line marks one beam diameter "
                  "wide at this speed, the same for every pen (mm/s; default: each pen's own power / speed)")
@@ -561,7 +589,9 @@ int main(int argc, char** argv) {
     };
     for (const std::string& name : heads) {
       const RealHead real{*find_head(name)};
-      for (const Strategy* s : chosen) add(name, real, profile_of(real.model), {0.0}, "", s);
+      // A shaper is tuned to SL10's resonance in the set; the other heads' are not known.
+      for (const Strategy* s : chosen)
+        if (s->shaper_hz == 0 || name == "SL10") add(name, real, profile_of(real.model), {0.0}, "", s);
     }
     const bool sl10 = head_name.empty() || head_name == "SL10";
     if (sl10) {
@@ -570,6 +600,12 @@ int main(int argc, char** argv) {
       second.model.second_order = true;
       RealHead rise{head_sl10(), kLaserRise_s};
       for (const Strategy* s : chosen) {
+        if (s->shaper_hz > 0) {  // only the rows of the set it is tuned to
+          if (!quick) add("SL10", sl, profile_of(sl.model), {0.0}, "", s, kRobustPlants);
+          add("SL10", sl, profile_of(sl.model), {0.0}, "picture per plant", s, kRobustPlants,
+              pictured(sl, kRobustPlants));
+          continue;
+        }
         if (s->feed_forward && s->corner == CornerStrategy::none) {
           for (double e : {-0.1, 0.1}) add("SL10", sl, profile_of(sl.model), {e}, "", s);
           add("SL10", sl, profile_of(sl.model), {0.0, -0.1, 0.1}, "", s);
@@ -705,7 +741,7 @@ int main(int argc, char** argv) {
     const SourceLimits& src = limits_of(g_source);
     std::printf("pulses: %s source (%g .. %g kHz), each pen at the frequency its speed needs; "
                 "\"max\" = the source's maximum (a faster pen leaves gaps)\n",
-                std::string(src.name).c_str(), src.min_frequency_khz, src.max_frequency_khz);
+                std::string(src.name).c_str(), src.min_frequency_khz, source_max_khz());
     std::printf("%-5s %-6s %-4s %-11s %-17s %-5s %6s %6s %7s %5s  %s\n", "head", "servo", "rise",
                 "strategy", "planner model", "class", "cps", "/ink", "mm/s", "kHz",
                 "max µm / rms µm / coverage / dose ratio / dose per mm; parameters");
@@ -719,7 +755,7 @@ int main(int argc, char** argv) {
       }
       const Quality& q = r.trial->quality;
       char khz[16];
-      if (r.trial->frequency_khz >= src.max_frequency_khz)
+      if (r.trial->frequency_khz >= source_max_khz())
         std::snprintf(khz, sizeof khz, "max");
       else
         std::snprintf(khz, sizeof khz, "%.0f", r.trial->frequency_khz);

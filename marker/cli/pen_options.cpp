@@ -9,6 +9,7 @@
 #include "marker/cli/unread_options.hpp"
 #include "marker/job/head_pen.hpp"
 #include "marker/limits/pen_settings.hpp"
+#include "marker/plan/input_shaper.hpp"
 
 namespace mark::cli {
 
@@ -46,6 +47,9 @@ void add_pen_options(CLI::App& app, PenArgs& a, bool with_speed) {
   opt(kMinLitSpeed, a.min_lit_speed_mm_s);
   opt(kFfLag, a.ff_lag_us);
   opt(kFfInertia, a.ff_inertia_us2);
+  opt(kShaperHz, a.shaper_hz);
+  opt(kShaperZeta, a.shaper_zeta);
+  add_setting(app, kShaper, a.shaper)->group("Pen parameters (override the defaults)");
 }
 
 void add_laser_options(CLI::App& app, LaserSettings& laser) {
@@ -115,6 +119,9 @@ Pen make_pen(const PenArgs& a, const HeadModel& head) {
   set(a.min_lit_speed_mm_s, pen.min_lit_speed_mm_s, 1);
   set(a.ff_lag_us, pen.ff_lag_s, 1e-6);
   set(a.ff_inertia_us2, pen.ff_inertia_s2, 1e-12);
+  set(a.shaper_hz, pen.shaper_hz, 1);
+  pen.shaper_zeta = a.shaper_zeta.value_or(*kShaperZeta.value);
+  pen.shaper = parse_shaper_kind(a.shaper);
   return pen;
 }
 
@@ -158,6 +165,11 @@ std::string pen_args_string(const Pen& p) {
   if (p.feed_forward()) {
     arg(kFfLag, p.ff_lag_s * 1e6);
     arg(kFfInertia, p.ff_inertia_s2 * 1e12);
+  }
+  if (p.shaper_hz > 0) {
+    arg(kShaperHz, p.shaper_hz);
+    arg(kShaperZeta, p.shaper_zeta);
+    s << " " << kShaper.name.flag << " " << to_string(p.shaper);
   }
   return s.str();
 }

@@ -30,7 +30,8 @@ struct PenArgs {
       polygon_delay_us, jump_settle_um, blank_angle_deg, run_in_mm, min_run_in_mm, run_out_mm,
       settle_um, join_speed_mm_s, tracking_error_us, accel_mm_s2, jump_accel_mm_s2,
       curve_accel_mm_s2, accel_limit_mm_s2, junction_dv_mm_s, laser_switch_speed_mm_s, min_lit_speed_mm_s,
-      ff_lag_us, ff_inertia_us2;
+      ff_lag_us, ff_inertia_us2, shaper_hz, shaper_zeta;
+  std::string shaper{kShaper.value};
 };
 
 // `with_speed`: whether --speed is one of them (mark has its own, which also takes "auto").

@@ -101,6 +101,16 @@ inline constexpr Quantity kFfLag{{"--ff-lag-us", "", "feed-forward: the model's 
                                  kDelayBounds, {}, "feed-forward: τ or 2ζ/ωn"};
 inline constexpr Quantity kFfInertia{{"--ff-inertia-us2", "", "feed-forward: the model's 1/ωn² (0: first order)"},
                                      {0, 1e10, "µs²"}, {}, "feed-forward: 1/ωn² (second order)"};
+// Input shaping (marker/plan/input_shaper.hpp). The resonance is checked against the tick as
+// well (at most a quarter of the tick rate, so its half period spans two ticks).
+inline constexpr Quantity kShaperHz{
+    {"--shaper-hz", "", "look-ahead: shape the locus against a mirror resonance at this frequency (0: off)"},
+    {100, 250000, "Hz", false, true}, 0};
+inline constexpr Quantity kShaperZeta{
+    {"--shaper-zeta", "", "look-ahead: the damping ratio of that resonance"}, {0, 0.5, ""}, 0.02};
+inline constexpr Choice kShaper{
+    {"--shaper", "", "look-ahead: input shaper, zv (2 impulses, 1/2 period) or zvd (3 impulses, a whole period)"},
+    "zv, zvd", "zv"};
 
 // The laser source (driver/laser_source.hpp: each one's limits).
 inline constexpr Choice kLaserSource{
@@ -129,7 +139,8 @@ inline constexpr SettingRef kDelaysPenSettings[] = {&kJumpDelay, &kJumpSettle, &
 inline constexpr SettingRef kBlankingPenSettings[] = {&kBlankAngle, &kRunIn,  &kMinRunIn,
                                                       &kRunOut,     &kSettle, &kJoinSpeed};
 inline constexpr SettingRef kLookaheadPenSettings[] = {&kAccel,      &kJumpAccel,        &kCurveAccel, &kAccelLimit,
-                                                       &kJunctionDv, &kLaserSwitchSpeed, &kMinLitSpeed};
+                                                       &kJunctionDv, &kLaserSwitchSpeed, &kMinLitSpeed,
+                                                       &kShaperHz,   &kShaperZeta,       &kShaper};
 
 // Why a pen with this corner strategy ("blanking", "delays", "none") and planner (look-ahead or
 // feed-forward on, or off) never reads `s`: "only a pen with corner delays reads it (this pen's
@@ -141,7 +152,7 @@ inline constexpr SettingRef kPenSettingList[] = {
     &kLaserOnDelay, &kLaserOffDelay, &kJumpDelay,   &kJumpSettle, &kMarkDelay,   &kPolygonDelay, &kBlankAngle,
     &kRunIn,       &kMinRunIn,       &kRunOut,      &kSettle,     &kJoinSpeed,   &kTrackingError, &kAccel,
     &kJumpAccel,   &kCurveAccel,     &kAccelLimit,  &kJunctionDv, &kLaserSwitchSpeed, &kMinLitSpeed, &kFfLag,
-    &kFfInertia,   &kPower,          &kFrequency,   &kPulseWidth, &kLaserSource, &kPasses};
+    &kFfInertia,   &kShaperHz,       &kShaperZeta,  &kShaper,     &kPower,          &kFrequency,   &kPulseWidth, &kLaserSource, &kPasses};
 inline constexpr SettingTable kPenSettings{"pen", "Pen", "pens.NAME", kPenSettingList};
 
 }  // namespace mark

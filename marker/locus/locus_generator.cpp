@@ -43,16 +43,25 @@ bool plans_speeds(const Pen& pen) { return pen.lookahead || pen.feed_forward(); 
 
 LocusGenerator::LocusGenerator(const Plan& plan)
     : commands_(plan.commands), tick_s_(plan.pen.tick_s) {
-  if (plans_speeds(plan.pen))
-    profiled_ = std::make_unique<PlannedLocus>(
-        plan.commands, plan.pen.tick_s, FeedForward{plan.pen.ff_lag_s, plan.pen.ff_inertia_s2});
+  if (!plans_speeds(plan.pen)) return;
+  InputShaper shaper = design_input_shaper(plan.pen);
+  auto planned = std::make_unique<PlannedLocus>(plan.commands, plan.pen.tick_s,
+                                                FeedForward{shaper.lag_s, shaper.inertia_s2});
+  if (!shaper.active() || plan.commands.empty()) {
+    profiled_ = std::move(planned);
+    return;
+  }
+  const std::uint64_t samples = PlannedLocus::count_samples(plan.commands, plan.pen.tick_s);
+  shaped_ = std::make_unique<ShapedLocus>(std::move(planned), std::move(shaper), samples,
+                                          plan.commands.front().start(), plan.commands.back().end());
 }
 
 LocusGenerator::~LocusGenerator() = default;
 
 std::uint64_t LocusGenerator::count_samples(const Plan& plan) {
-  return plans_speeds(plan.pen) ? PlannedLocus::count_samples(plan.commands, plan.pen.tick_s)
-                                : count_samples(plan.commands, plan.pen.tick_s);
+  if (!plans_speeds(plan.pen)) return count_samples(plan.commands, plan.pen.tick_s);
+  const std::uint64_t planned = PlannedLocus::count_samples(plan.commands, plan.pen.tick_s);
+  return planned > 0 ? planned + design_input_shaper(plan.pen).tail_ticks() : 0;
 }
 
 std::uint64_t LocusGenerator::count_samples(std::span<const Command> commands, double tick_s) {
@@ -85,8 +94,8 @@ bool LocusGenerator::advance() {
 }
 
 std::size_t LocusGenerator::generate(ScanSample* out, std::size_t capacity) {
-  if (profiled_) {
-    const std::size_t n = profiled_->generate(out, capacity);
+  if (profiled_ || shaped_) {
+    const std::size_t n = shaped_ ? shaped_->generate(out, capacity) : profiled_->generate(out, capacity);
     emitted_ += n;
     return n;
   }

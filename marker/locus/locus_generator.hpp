@@ -17,6 +17,7 @@
 
 #include "marker/locus/path_walker.hpp"
 #include "marker/locus/planned_locus.hpp"
+#include "marker/locus/shaped_locus.hpp"
 #include "marker/plan/command.hpp"
 #include "marker/plan/plan.hpp"
 #include "ringbuffer/scan_sample.hpp"
@@ -28,13 +29,15 @@ class LocusGenerator {
   LocusGenerator(std::span<const Command> commands, double tick_s);
   // A plan's locus at its pen's tick: constant-speed as above, or — when the pen plans speeds
   // (look-ahead, feed-forward) — the planned locus with the pen's feed-forward
-  // (planned_locus.hpp). The plan must outlive the generator.
+  // (planned_locus.hpp), through the pen's input shaper when it has one (shaped_locus.hpp). The
+  // plan must outlive the generator.
   explicit LocusGenerator(const Plan& plan);
   ~LocusGenerator();
 
   // Writes up to `capacity` samples to `out`; returns how many (0 once the job is done).
   std::size_t generate(ScanSample* out, std::size_t capacity);
   bool done() const {
+    if (shaped_) return shaped_->done();
     return profiled_ ? profiled_->done() : remaining_ == 0 && next_ >= commands_.size();
   }
   std::uint64_t samples_written() const { return emitted_; }
@@ -49,7 +52,8 @@ class LocusGenerator {
 
   std::span<const Command> commands_;
   double tick_s_;
-  std::unique_ptr<PlannedLocus> profiled_;  // set when the pen plans speeds
+  std::unique_ptr<PlannedLocus> profiled_;  // set when the pen plans speeds without a shaper
+  std::unique_ptr<ShapedLocus> shaped_;     // set when it plans them with one
   std::size_t next_ = 0;
   double ideal_ticks_ = 0;      // ideal end time of the commands so far, in ticks
   std::uint64_t emitted_ = 0;   // samples written (= ticks elapsed)

@@ -107,7 +107,7 @@ const EllipseTable& PlannedLocus::ellipse_table(const EllipticalArc& g) {
 bool PlannedLocus::advance() {
   // The acceleration the current command ends with: the next samples' tick means reach back
   // into it.
-  prev_end_accel_ = ff_.inertia_s2 > 0 && current_ && current_->kind != CommandKind::dwell
+  prev_end_accel_ = ff_.inertia_s2 != 0 && current_ && current_->kind != CommandKind::dwell
                         ? accel_at(*current_, profile_, 1)
                         : Point(0, 0);
   while (next_ < commands_.size()) {
@@ -117,7 +117,7 @@ bool PlannedLocus::advance() {
     current_ = &c;
     // ... and the one the next command starts with (second order only).
     next_start_accel_ = Point(0, 0);
-    for (std::size_t j = next_; ff_.inertia_s2 > 0 && j < commands_.size(); ++j) {
+    for (std::size_t j = next_; ff_.inertia_s2 != 0 && j < commands_.size(); ++j) {
       const Command& n = commands_[j];
       if (!(durations_[j] > 0)) continue;
       if (n.kind != CommandKind::dwell) next_start_accel_ = accel_at(n, profile_of(n), 0);
@@ -288,7 +288,7 @@ std::size_t PlannedLocus::generate(ScanSample* out, std::size_t capacity) {
     }
     const std::uint64_t n = std::min<std::uint64_t>(
         capacity - written, static_cast<std::uint64_t>(k_last_ - static_cast<std::int64_t>(k_) + 1));
-    if (ff_.inertia_s2 > 0)
+    if (ff_.inertia_s2 != 0)
       emit_run<true>(out + written, n);
     else
       emit_run<false>(out + written, n);

@@ -32,7 +32,9 @@ namespace mark {
 
 struct FeedForward {
   double lag_s = 0;       // first-order term: τ, or 2ζ/ωn
-  double inertia_s2 = 0;  // second-order term: 1/ωn² (0 for a first-order model)
+  // Second-order term: 1/ωn² (0 for a first-order model); under an input shaper, less the
+  // shaper's spread (input_shaper.hpp), so it may be negative.
+  double inertia_s2 = 0;
 };
 
 class PlannedLocus {

@@ -16,6 +16,12 @@ enum class CornerStrategy {
 };
 
 std::string_view to_string(CornerStrategy strategy);
+
+// Input shapers (marker/plan/input_shaper.hpp): ZV, two impulses half a period apart; ZVD,
+// three over a whole period, which in theory tolerates a resonance further off (5 % of the
+// ringing left at ±14 %, ZV's at ±3 %) but smooths twice as much. Measured on the simulator
+// (docs/speed.md), ZV holds "high" over as wide a band and marks closer, so it is the default.
+enum class ShaperKind { zv, zvd };
 // "blanking", "delays" or "none"; throws InputError naming the value otherwise.
 CornerStrategy parse_corner_strategy(std::string_view name);
 
@@ -84,6 +90,12 @@ struct Pen {
   double ff_lag_s = 0;
   double ff_inertia_s2 = 0;
   bool feed_forward() const { return ff_lag_s > 0 || ff_inertia_s2 > 0; }
+
+  // Input shaping (needs look-ahead; marker/plan/input_shaper.hpp): the mirror resonance the
+  // locus is shaped against, Hz (0: off), the damping ratio the shaper assumes, and its kind.
+  double shaper_hz = 0;
+  double shaper_zeta = 0.02;
+  ShaperKind shaper = ShaperKind::zv;
 
   // Seconds → whole ticks of this pen (rounded to nearest).
   std::uint32_t ticks(double seconds) const;

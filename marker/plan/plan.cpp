@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 
+#include "marker/plan/input_shaper.hpp"
 #include "marker/plan/plan_builder.hpp"
 #include "marker/plan/speed_plan.hpp"
 
@@ -39,13 +40,15 @@ double turn_angle_rad(const Element& a, const Element& b) {
 Box Plan::bounds() const {
   Box box;
   box.add(home);
+  const InputShaper shaper = design_input_shaper(pen);
   for (const Command& c : commands) {
     Box b = c.path.bounds();
-    if (pen.feed_forward() && c.kind != CommandKind::dwell) {
+    if ((pen.feed_forward() || shaper.active()) && c.kind != CommandKind::dwell) {
       // The command leads the path by lag·v + inertia·a at most: speed and the larger of the
-      // tangential and centripetal rates (both bounded by the plan).
+      // tangential and centripetal rates (both bounded by the plan). An input shaper's command
+      // is a weighted mean of such commands, inside the same box.
       const double a = std::max({c.accel_mm_s2, c.decel_mm_s2, pen.curve_accel_mm_s2});
-      const double lead = pen.ff_lag_s * c.speed_mm_s + pen.ff_inertia_s2 * 2 * a;
+      const double lead = std::abs(shaper.lag_s) * c.speed_mm_s + std::abs(shaper.inertia_s2) * 2 * a;
       b.min -= Point(lead, lead);
       b.max += Point(lead, lead);
     }

@@ -44,9 +44,11 @@ void expect_same(const Pen& a, const Pen& b) {
            {a.curve_accel_mm_s2, b.curve_accel_mm_s2, "cacc"}, {a.accel_limit_mm_s2, b.accel_limit_mm_s2, "lim"},
            {a.junction_dv_mm_s, b.junction_dv_mm_s, "dv"}, {a.laser_switch_speed_mm_s, b.laser_switch_speed_mm_s, "sw"},
            {a.min_lit_speed_mm_s, b.min_lit_speed_mm_s, "minlit"}, {a.ff_lag_s, b.ff_lag_s, "lag"},
-           {a.ff_inertia_s2, b.ff_inertia_s2, "inertia"}})
+           {a.ff_inertia_s2, b.ff_inertia_s2, "inertia"}, {a.shaper_hz, b.shaper_hz, "shaper"},
+           {a.shaper_zeta, b.shaper_zeta, "shaper zeta"}})
     EXPECT_TRUE(near(x, y)) << what << ": " << x << " vs " << y;
   EXPECT_EQ(a.lookahead || a.feed_forward(), b.lookahead || b.feed_forward());
+  EXPECT_EQ(a.shaper, b.shaper);
 }
 
 TEST(PenOptions, PrintedOptionsReproduceThePenOnAnyHead) {
@@ -61,7 +63,12 @@ TEST(PenOptions, PrintedOptionsReproduceThePenOnAnyHead) {
       r.accel_share = 0.37;
       r.min_run_in = 1.7;
       r.polygon = 0.3;
-      const Pen pen = pen_for_profile(sa14, corner, 1234.5, 10e-6, r);
+      Pen pen = pen_for_profile(sa14, corner, 1234.5, 10e-6, r);
+      if (r.lookahead) {  // and a shaper, which only the look-ahead planner reads
+        pen.shaper_hz = 8765;
+        pen.shaper_zeta = 0.035;
+        pen.shaper = ShaperKind::zvd;
+      }
       // Parsed against another head (one fast enough for SA14's jumps): every parameter is
       // explicit, no default leaks in.
       expect_same(pen, parse(cli::pen_args_string(pen), head_sl10()));

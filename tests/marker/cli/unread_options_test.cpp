@@ -43,8 +43,10 @@ std::string pen_job_error(const std::string& corner, const std::string& key, con
 
 // A value inside every pen setting's range, for the setting.
 std::string value_for(const SettingRef& s) {
+  if (const auto* c = std::get_if<const Choice*>(&s)) return (*c)->names().front();
   const Quantity* q = std::get<const Quantity*>(s);
-  return q == &kBlankAngle ? "10" : "0.5";
+  if (q == &kBlankAngle) return "10";
+  return q->bounds.min <= 0.5 && 0.5 <= q->bounds.max ? "0.5" : std::to_string(static_cast<int>(q->bounds.min));
 }
 
 TEST(UnreadOptions, ACornerSettingOnAnotherCornerIsRefusedAlikeByCommandLineAndJobFile) {
@@ -75,7 +77,7 @@ TEST(UnreadOptions, LookAheadSettingsNeedTheLookAheadPlanner) {
   for (const SettingRef& s : kLookaheadPenSettings) {
     const std::string flag(name_of(s).flag);
     SCOPED_TRACE(flag);
-    EXPECT_EQ(mark_error({flag, "1000"}),
+    EXPECT_EQ(mark_error({flag, value_for(s)}),
               flag + " does not apply: only the look-ahead planner reads it (give --lookahead or --feed-forward)");
   }
   EXPECT_EQ(mark_error({"--lookahead", "--junction-dv", "50"}), "");

@@ -32,6 +32,7 @@
 // reachable with that source.
 //
 //   cps [--short] [--json] [--head NAME] [--strategy NAME] [--workers N] [--source NAME] [--max-frequency KHZ]
+//       [--device sim|lmc-emulated[:VARIANT]]
 //   cps --speed MM_S [--head NAME] [--strategy NAME] [--text T] [--font F]
 // --speed evaluates one speed with each strategy's default parameters instead of searching.
 #include <CLI/CLI.hpp>
@@ -55,6 +56,10 @@
 #include "driver/sim/head_model.hpp"
 #include "driver/sim/quality_class.hpp"
 #include "fonts/catalog.hpp"
+#include "driver/lmc/lmc_spec.hpp"
+#include "marker/cli/device_factory.hpp"
+#include "marker/cli/emulated_lmc_device.hpp"
+#include "marker/cli/lmc_options.hpp"
 #include "marker/cli/pen_options.hpp"
 #include "marker/cli/plant_option.hpp"
 #include "marker/head/head_fit.hpp"
@@ -277,16 +282,47 @@ const std::vector<std::string> kRobustPlants = {"",
                                                 "backemf_speed=12000",
                                                 "rms_accel_pct=40,thermal_tau_s=0.02"};
 
+// --device: where every trial marks. "sim", the simulated scanner; "lmc-emulated[:VARIANT]", the
+// emulated LMC board (the real driver's packets, the board's own clock and units, feed-forward
+// as timed moves) driving that scanner, in virtual time: a search on the board itself.
+std::string g_device = "sim";
+
+// The emulated board's job on the simulated scanner; its device time is the scanner's (the
+// board's clock), not the host's wall time.
+JobResult mark_on_board(const JobSpec& spec, const QualityReference* reference, const RealHead& head,
+                        const Plant& plant) {
+  cli::SimSettings sim;
+  sim.laser_rise_s = head.laser_rise_s;
+  sim.plant = plant;
+  sim.virtual_time = true;
+  const cli::OpenedDevice opened = cli::open_device(g_device, spec, sim, cli::LmcArgs{});
+  auto& board = dynamic_cast<cli::EmulatedLmcDevice&>(*opened.device);
+  SimEvaluator evaluator(board.scanner(), reference);
+  JobOptions options;
+  options.virtual_time = true;
+  options.evaluator = &evaluator;
+  JobResult r = run_job(spec, options, board);
+  for (const auto& [key, value] : r.device.figures)
+    if (key == "scanner_device_time_s") r.mark_time_s = value;
+  return r;
+}
+
 Trial mark_with(const Workload& w, const RealHead& head, const Pen& pen, const Plant& plant = {},
                 double frequency_khz = 0) {
   const JobSpec spec = spec_for(w, head, pen, frequency_khz);
-  JobOptions options;
-  options.virtual_time = true;
-  SimScannerOptions sim = simulator_options(spec);
-  sim.laser_rise_s = head.laser_rise_s;
-  sim.plant = plant;
-  SimScanner scanner(sim);
-  const JobResult r = run_job_simulated(spec, options, scanner, w.reference.get());
+  JobResult r;
+  if (g_device == "sim") {
+    JobOptions options;
+    options.virtual_time = true;
+    SimScannerOptions sim = simulator_options(spec);
+    sim.laser_rise_s = head.laser_rise_s;
+    sim.plant = plant;
+    SimScanner scanner(sim);
+    r = run_job_simulated(spec, options, scanner, w.reference.get());
+  } else {
+    r = mark_on_board(spec, w.reference.get(), head, plant);
+  }
+  // A board that stopped early (a drive trip, a fault) marked the part badly: its quality says so.
   return {w.characters / r.mark_time_s, r.mark_time_s, *r.quality, spec.laser.frequency_khz};
 }
 
@@ -516,6 +552,9 @@ int main(int argc, char** argv) {
   std::string source_name = "fiber";
   app.add_option("--source", source_name,
                  "laser source whose frequency range the pulses are searched in: " + laser_source_names());
+  app.add_option("--device", g_device,
+                 "mark every trial on the simulated scanner (sim) or through the emulated LMC board "
+                 "driving it (lmc-emulated[:VARIANT]; virtual time)");
   app.add_option("--max-frequency", g_max_frequency_khz,
                  "the source's top pulse frequency, below its kind's (kHz; a 100 kHz Q-switched fiber: --max-frequency 100)")
       ->check(CLI::Range(1.0, 4000.0));
@@ -531,6 +570,12 @@ int main(int argc, char** argv) {
     if (!source || !limits_of(*source).pulsed)
       throw InputError("--source " + source_name + ": a pulsed source (fiber, mopa, uv) is needed");
     g_source = *source;
+    if (g_device != "sim") {
+      const auto board = lmc::parse_lmc_spec(g_device);
+      if (!board || !board->emulated)
+        throw InputError("--device " + g_device + ": cps marks on sim or lmc-emulated[:VARIANT] (a real board has no "
+                         "simulated scanner to judge the mark)");
+    }
     const std::vector<Strategy> strategies = all_strategies();
     std::vector<const Strategy*> chosen;
     for (const Strategy& s : strategies)
@@ -708,6 +753,7 @@ int main(int argc, char** argv) {
                             {"ink_bound_ratio", r.trial ? r.trial->cps / bound : 0.0},
                             {"speed_mm_s", r.trial ? r.x[0] : 0.0},
                             {"source", to_string(g_source)},
+                            {"device", g_device},
                             {"trials", r.trials},
                             {"search_s", r.search_s}};
         if (r.trial) {
@@ -735,7 +781,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     std::printf("cps: 62 characters A–Z a–z 0–9, built-in font, 1 mm cap height, device time; "
-                "%s search; %.0f s\n", quick ? "short" : "full", elapsed);
+                "%s search; %.0f s; marked on %s\n", quick ? "short" : "full", elapsed, g_device.c_str());
     std::printf("ink-only bound: %.1f mm of ink at %.1f m/s = %.0f cps\n", work.ink_mm,
                 kInkSpeed_mm_s / 1000, bound);
     const SourceLimits& src = limits_of(g_source);

@@ -23,6 +23,7 @@
 #include "marker/locus/locus_generator.hpp"
 #include "marker/plan/plan.hpp"
 #include "ringbuffer/laser_delay_line.hpp"
+#include "tests/marker/cps_workload.hpp"
 #include "tests/marker/plan_test_support.hpp"
 
 namespace mark {
@@ -272,13 +273,7 @@ TEST(PlannedLocus, FeedForwardHeadJumpsInTheDatasheetTimes) {
 // down), the 62 characters meet "high" quality — several times faster than the constant-speed
 // strategies manage.
 TEST(PlannedLocus, SL10MeetsHighQualityAtTheReachedSpeed) {
-  JobSpec spec;
-  spec.text = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
-  spec.font = open_font(kBuiltinFontName);
-  spec.layout.height_mm = 1;
-  spec.layout.align = Align::center;
-  spec.layout.base = Point(0, 0.5);
-  spec.head = head_sl10();
+  JobSpec spec = test::cps_characters_spec();
   spec.pen = ff_pen(CornerStrategy::none, 5000, 0.9);
   // Pulses that overlap at 5000 mm/s: 200 kHz (the Q-switched fiber's top) puts them 25 µm
   // apart on the 40 µm spot; the default 30 kHz would leave 127 µm gaps, not "high".

@@ -15,6 +15,7 @@
 #include "marker/job/head_pen.hpp"
 #include "marker/job/job.hpp"
 #include "marker/job/sim_evaluator.hpp"
+#include "tests/marker/cps_workload.hpp"
 
 namespace mark {
 namespace {
@@ -25,18 +26,8 @@ struct Result {
 };
 
 Result mark_808(const Plant& plant) {
-  static const HeadProfile model = [] {
-    SimScannerOptions o;
-    o.head = head_sl10();
-    return identify_head(o);
-  }();
-  JobSpec spec;
-  spec.text = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
-  spec.font = open_font(kBuiltinFontName);
-  spec.layout.height_mm = 1;
-  spec.layout.align = Align::center;
-  spec.layout.base = Point(0, 0.5);
-  spec.head = head_sl10();
+  const HeadProfile& model = test::identified_sl10();
+  JobSpec spec = test::cps_characters_spec();
   PenRules r;
   r.lookahead = r.feed_forward = true;
   r.accel_share = r.jump_accel_share = 0.95;
@@ -47,12 +38,7 @@ Result mark_808(const Plant& plant) {
   // 40 µm spot (the default 30 kHz would leave 227 µm gaps, and the class would say so).
   spec.laser.source = LaserSource::mopa;
   spec.laser.frequency_khz = 400;
-  JobOptions options;
-  options.virtual_time = true;
-  SimScannerOptions o = simulator_options(spec);
-  o.plant = plant;
-  SimScanner scanner(o);
-  const JobResult j = run_job_simulated(spec, options, scanner);
+  const JobResult j = test::mark_on_plant(spec, plant);
   return {*j.quality, 62 / j.mark_time_s};
 }
 

@@ -22,9 +22,11 @@
 // `head identify --from-image`): what a user who identifies the head in front of them gets, the
 // lag error of a datasheet gone and the effects the fit cannot see left.
 //
-// The strategy none+ff+zv is none+ff through an input shaper tuned to the set's 10 kHz mirror
-// resonance (marker/plan/input_shaper.hpp); it runs on SL10 only, in the exact row and the
-// set's rows.
+// The strategy none+ff+zv is none+ff through an input shaper (marker/plan/input_shaper.hpp):
+// told the set's 10 kHz mirror resonance in the exact and datasheet rows, and in the picture-per-
+// plant row shaped against the resonance each plant's picture showed (none where it showed none;
+// none+ff's picture row does the same, from its own starting points). SL10 only, in the exact
+// row and the set's rows.
 //
 // Every pen gets the pulse frequency its speed needs for the spots of consecutive pulses to
 // overlap (the quality classes see gaps between them), within the laser source's range
@@ -105,7 +107,8 @@ struct Strategy {
   // local optimum; gentle and brisk starts find the robust and the fast one).
   std::vector<std::vector<double>> starts = {};
   // Input shaping against this mirror resonance (0: none): the robust set's 10 kHz, which the
-  // user is taken to know (a datasheet, or the ringing in the test pattern's mark).
+  // rows planned from the datasheet or the step response are told; the picture-per-plant rows
+  // shape against what each plant's picture showed (marker/head/ring_fit.hpp), or not at all.
   double shaper_hz = 0;
 };
 
@@ -176,7 +179,9 @@ Pen pen_at(const Strategy& s, const std::vector<double>& x, const HeadProfile& m
   if (auto v = get("jump_accel_share")) r.jump_accel_share = *v;
   if (auto v = get("min_lit_speed_share")) r.min_lit_speed_share = *v;
   Pen pen = pen_for_profile(model, s.corner, x[0], kTick_s, r);
-  pen.shaper_hz = s.shaper_hz;
+  // A profile fitted from a picture shapes against the resonance the picture showed, or none
+  // (pen_for_profile); the others are told the set's.
+  if (s.shaper_hz > 0 && model.source != "image") pen.shaper_hz = s.shaper_hz;
   return pen;
 }
 

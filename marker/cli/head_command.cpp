@@ -125,6 +125,13 @@ int identify_from_image(const IdentifyArgs& a) {
                                 {"overshoot_um", c.overshoot_um},
                                 {"rms_first_um", c.rms_first_um},
                                 {"rms_second_um", c.rms_second_um}});
+      const RingFit& ring = corners.ring;
+      j["resonance"] = {{"seen", ring.seen},
+                        {"frequency_hz", ring.frequency_hz},
+                        {"zeta", ring.zeta},
+                        {"amplitude_um", ring.amplitude_um},
+                        {"rms_before_um", ring.rms_before_um},
+                        {"rms_after_um", ring.rms_after_um}};
     }
     j["profile"] = path;
     std::cout << j.dump(2) << "\n";
@@ -143,6 +150,14 @@ int identify_from_image(const IdentifyArgs& a) {
                 "rad/s) rms %.2f µm\n",
                 corners.corners.size(), most, corners.rms_first_um, corners.zeta, corners.omega_n_rad_s,
                 corners.rms_second_um);
+    const RingFit& ring = corners.ring;
+    if (ring.seen)
+      std::printf("mirror resonance: %.0f Hz, zeta %.3f, ringing %.1f µm after the corners (what the model leaves: rms "
+                  "%.2f → %.2f µm); --lookahead and --feed-forward shape against it\n",
+                  ring.frequency_hz, ring.zeta, ring.amplitude_um, ring.rms_before_um, ring.rms_after_um);
+    else
+      std::printf("no mirror resonance seen after the corners (best fit %.0f Hz: rms %.2f → %.2f µm)\n",
+                  ring.frequency_hz, ring.rms_before_um, ring.rms_after_um);
   }
   std::printf("model: %s order; limits (the preset's, not measured): speed %.0f mm/s, acceleration %.3g mm/s²\n",
               std::string(to_string(p.model)).c_str(), p.max_speed_mm_s, p.max_accel_mm_s2);

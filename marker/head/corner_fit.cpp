@@ -36,15 +36,19 @@ struct AxisServo {
 // The model's corner: the stopping axis's place (relative to the corner, + past it) as the
 // running axis passes each place along the second leg. Both from rest at the first leg's start.
 struct ModelCorner {
-  std::vector<double> run, stop;
+  std::vector<double> run, stop, t;  // t: time since the command turned the corner, s
 
-  double stop_at(double run_mm) const {
+  double stop_at(double run_mm) const { return at(stop, run_mm); }
+  double time_at(double run_mm) const { return at(t, run_mm); }
+
+ private:
+  double at(const std::vector<double>& of, double run_mm) const {
     const auto it = std::lower_bound(run.begin(), run.end(), run_mm);
-    if (it == run.begin()) return stop.front();
-    if (it == run.end()) return stop.back();
+    if (it == run.begin()) return of.front();
+    if (it == run.end()) return of.back();
     const auto i = static_cast<std::size_t>(it - run.begin());
     const double f = (run_mm - run[i - 1]) / (run[i] - run[i - 1]);
-    return stop[i - 1] + f * (stop[i] - stop[i - 1]);
+    return of[i - 1] + f * (of[i] - of[i - 1]);
   }
 };
 
@@ -56,14 +60,14 @@ ModelCorner model_corner(double leg_mm, double v, const AxisServo& stop_axis, co
     run_axis.advance(r, rv, 0, 0);
   }
   ModelCorner m;
-  m.run.reserve(n), m.stop.reserve(n);
+  m.run.reserve(n), m.stop.reserve(n), m.t.reserve(n);
   double furthest = -1e300;
   for (std::size_t i = 0; i < n; ++i) {
     stop_axis.advance(s, sv, 0, 0);
     run_axis.advance(r, rv, v * kModelStep_s * static_cast<double>(i), v);
     if (r <= furthest) continue;  // keep the running axis increasing for the lookup
     furthest = r;
-    m.run.push_back(r), m.stop.push_back(s);
+    m.run.push_back(r), m.stop.push_back(s), m.t.push_back(kModelStep_s * static_cast<double>(i));
   }
   return m;
 }
@@ -224,6 +228,24 @@ CornerFit fit_corners(const PlacedPicture& picture, const LagPattern& pattern, d
   fit.rms_second_um = std::sqrt(second / n) * 1e3;
   fit.second_order = fit.rms_second_um < 0.5 * fit.rms_first_um && fit.zeta < 3;
   const std::vector<double>& offsets = fit.second_order ? second_offsets : first_offsets;
+  // What the chosen servo model leaves, in the time since each corner: a mirror resonance rings
+  // there (ring_fit.hpp).
+  {
+    const double zeta = fit.second_order ? fit.zeta : 0;
+    const AxisServo axes[2] = {AxisServo(tau_x_s, zeta), AxisServo(tau_y_s, zeta)};
+    std::vector<RingTrace> traces;
+    for (std::size_t i = 0; i < legs.size(); ++i) {
+      const LagCorner& c = pattern.corners[i];
+      const ModelCorner m = model_corner(pattern.corner_leg_mm, c.speed_mm_s, axes[c.axis], axes[1 - c.axis]);
+      RingTrace trace;
+      for (std::size_t k = 0; k < legs[i].run.size(); ++k) {
+        trace.t_s.push_back(m.time_at(legs[i].run[k]));
+        trace.residual_mm.push_back(legs[i].centre[k] - m.stop_at(legs[i].run[k]) - offsets[i]);
+      }
+      traces.push_back(std::move(trace));
+    }
+    fit.ring = fit_ring(traces);
+  }
   for (std::size_t i = 0; i < legs.size(); ++i) {
     CornerFigure f;
     f.axis = pattern.corners[i].axis;

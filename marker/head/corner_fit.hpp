@@ -16,13 +16,16 @@
 //      the picture is the one free offset per corner;
 //   4. ζ minimises the squared residuals over every corner (a log scan over 0.1 … 10, then a
 //      golden-section refinement); the second order is chosen when its RMS residual is under
-//      half the first order's and ζ < 3, the rule `head identify` applies to step responses.
+//      half the first order's and ζ < 3, the rule `head identify` applies to step responses;
+//   5. what the chosen model leaves is searched for a mirror resonance ringing after the corner
+//      (ring_fit.hpp).
 #include <string>
 #include <vector>
 
 #include "driver/vec2.hpp"
 #include "marker/head/lag_pattern.hpp"
 #include "marker/head/pattern_marks.hpp"
+#include "marker/head/ring_fit.hpp"
 
 namespace mark {
 
@@ -41,6 +44,8 @@ struct CornerFit {
   double omega_n_rad_s = 0;
   double rms_first_um = 0, rms_second_um = 0;
   std::vector<CornerFigure> corners;
+  // A mirror resonance in what the chosen model leaves (ring_fit.hpp); `ring.seen` false: none.
+  RingFit ring;
 };
 
 // The picture as the lag fit placed it: field mm ↔ pixels through the marks' box, and the

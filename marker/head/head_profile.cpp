@@ -27,6 +27,8 @@ constexpr Range kAccel{"max_accel_mm_s2", 1e-3, 1e12};
 constexpr Range kField{"field_mm", 1e-3, 1e4};
 constexpr Range kTick{"tick_s", 1e-7, 1e-2};
 constexpr Range kRms{"", 0, 1e9};
+constexpr Range kResonance{"resonance_hz", 100, 250000};
+constexpr Range kResonanceZeta{"resonance_zeta", 0, 0.5};
 
 constexpr HeadFileKind kKind{"head profile", kFormat, kVersion};
 
@@ -99,6 +101,10 @@ std::string head_profile_json(const HeadProfile& p) {
   j["tick_s"] = p.tick_s;
   j["fit_rms_first_um"] = p.fit_rms_first_um;
   j["fit_rms_second_um"] = p.fit_rms_second_um;
+  if (p.resonance_hz > 0) {
+    j["resonance_hz"] = p.resonance_hz;
+    j["resonance_zeta"] = p.resonance_zeta;
+  }
   j["source"] = p.source;
   return j.dump(2) + "\n";
 }
@@ -122,6 +128,8 @@ HeadProfile parse_head_profile(std::string_view json_text, std::string_view wher
   p.tick_s = number(j, kTick.key, kTick, where, false, 10e-6);
   p.fit_rms_first_um = number(j, "fit_rms_first_um", kRms, where, false);
   p.fit_rms_second_um = number(j, "fit_rms_second_um", kRms, where, false);
+  p.resonance_hz = number(j, kResonance.key, kResonance, where, false);
+  p.resonance_zeta = number(j, kResonanceZeta.key, kResonanceZeta, where, false);
   p.source = text(j, "source", where, "identified");
   return p;
 }

@@ -9,6 +9,7 @@
 //     "tau_s": 1.2e-4, "omega_n_rad_s": 1.7e4, "zeta": 1.02,
 //     "max_speed_mm_s": 19200, "max_accel_mm_s2": 4.4e7, "field_mm": 110, "tick_s": 1e-5,
 //     "fit_rms_first_um": 0.01, "fit_rms_second_um": 0.01, "source": "identified" }
+//   and, when a picture showed one, "resonance_hz": 9950, "resonance_zeta": 0.02.
 #include <string>
 #include <string_view>
 
@@ -34,6 +35,10 @@ struct HeadProfile {
   double tick_s = 10e-6;             // command period the head was measured at
   double fit_rms_first_um = 0;       // residual of each fit over the linear test parts
   double fit_rms_second_um = 0;
+  // A mirror resonance the identification saw ringing after the test pattern's corners (0 Hz:
+  // none seen): a planner that looks ahead shapes its locus against it (input_shaper.hpp).
+  double resonance_hz = 0;
+  double resonance_zeta = 0;
   std::string source = "identified";  // "identified" (measured) or "datasheet"
 
   // Ramp lag of the chosen model: τ, or 2ζ/ωn.

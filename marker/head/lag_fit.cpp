@@ -250,6 +250,8 @@ HeadProfile picture_profile(HeadProfile p, const LagFit& fit) {
   if (corners.second_order) p.omega_n_rad_s = corners.omega_n_rad_s, p.zeta = corners.zeta;
   p.fit_rms_first_um = corners.corners.empty() ? fit.rms_um : corners.rms_first_um;
   p.fit_rms_second_um = corners.corners.empty() ? 0 : corners.rms_second_um;
+  p.resonance_hz = corners.ring.seen ? corners.ring.frequency_hz : 0;
+  p.resonance_zeta = corners.ring.seen ? corners.ring.zeta : 0;
   p.source = "image";
   return p;
 }

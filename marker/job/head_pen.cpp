@@ -18,8 +18,15 @@ HeadDynamics dynamics_of(const HeadProfile& profile) {
 
 Pen pen_for_profile(const HeadProfile& profile, CornerStrategy strategy, double mark_speed_mm_s,
                     double tick_s, const PenRules& rules) {
-  return default_pen(strategy, dynamics_of(profile), mark_speed_mm_s,
-                     kJumpSpeedShare * profile.max_speed_mm_s, tick_s, rules);
+  Pen pen = default_pen(strategy, dynamics_of(profile), mark_speed_mm_s,
+                        kJumpSpeedShare * profile.max_speed_mm_s, tick_s, rules);
+  // A resonance the identification saw: the look-ahead planner shapes against it, where the
+  // tick can place the shaper's impulses (at most a quarter of the tick rate).
+  if ((rules.lookahead || rules.feed_forward) && profile.resonance_hz > 0 && profile.resonance_hz <= 0.25 / tick_s) {
+    pen.shaper_hz = profile.resonance_hz;
+    pen.shaper_zeta = profile.resonance_zeta;
+  }
+  return pen;
 }
 
 Pen pen_for_head(const HeadModel& head, CornerStrategy strategy, double mark_speed_mm_s,

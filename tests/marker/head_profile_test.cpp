@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "marker/job/head_pen.hpp"
 #include "tests/marker/cli_runner.hpp"
 
 namespace mark {
@@ -48,6 +49,31 @@ TEST(HeadProfile, JsonRoundTrip) {
   for (const char* key : {"tau_s", "omega_n_rad_s", "zeta", "max_speed_mm_s", "max_accel_mm_s2",
                           "field_mm", "tick_s"})
     EXPECT_TRUE(j.contains(key)) << key;
+  // No resonance seen: no key; one seen: both, back as they were.
+  EXPECT_FALSE(j.contains("resonance_hz"));
+  EXPECT_EQ(q.resonance_hz, 0);
+  HeadProfile r = p;
+  r.resonance_hz = 9950;
+  r.resonance_zeta = 0.035;
+  const HeadProfile s = parse_head_profile(head_profile_json(r), "mem");
+  EXPECT_DOUBLE_EQ(s.resonance_hz, 9950);
+  EXPECT_DOUBLE_EQ(s.resonance_zeta, 0.035);
+}
+
+// A profile with a resonance shapes every look-ahead pen planned with it, where the tick can;
+// a pen without look-ahead, or a resonance above a quarter of the tick rate, is not shaped.
+TEST(HeadProfile, AResonanceInTheProfileShapesLookAheadPens) {
+  HeadProfile p = datasheet_profile(head_sl10());
+  p.resonance_hz = 9950;
+  p.resonance_zeta = 0.03;
+  PenRules planned;
+  planned.lookahead = true;
+  const Pen shaped = pen_for_profile(p, CornerStrategy::none, 2000, 10e-6, planned);
+  EXPECT_DOUBLE_EQ(shaped.shaper_hz, 9950);
+  EXPECT_DOUBLE_EQ(shaped.shaper_zeta, 0.03);
+  EXPECT_EQ(pen_for_profile(p, CornerStrategy::blanking, 2000, 10e-6, PenRules{}).shaper_hz, 0);
+  p.resonance_hz = 30000;
+  EXPECT_EQ(pen_for_profile(p, CornerStrategy::none, 2000, 10e-6, planned).shaper_hz, 0);
 }
 
 TEST(HeadProfile, LagAndInverseFilterTermsOfEachModel) {
@@ -81,6 +107,8 @@ TEST(HeadProfile, BadFilesAreRefusedNamingKeyAndRange) {
             std::string::npos);
   EXPECT_NE(with("max_speed_mm_s", 1e300).find("'max_speed_mm_s'"), std::string::npos);
   EXPECT_NE(with("tau_s", 0.12).find("'tau_s' is 0.12"), std::string::npos);  // ms given as s
+  EXPECT_NE(with("resonance_hz", 50).find("'resonance_hz' is 50, outside 100 to 250000"), std::string::npos);
+  EXPECT_NE(with("resonance_zeta", 0.9).find("'resonance_zeta' is 0.9, outside 0 to 0.5"), std::string::npos);
   auto k = j;
   k.erase("omega_n_rad_s");  // the chosen (second-order) model's parameter
   EXPECT_NE(profile_error_of(k.dump()).find("'omega_n_rad_s' is missing"), std::string::npos);

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <memory>
 #include <chrono>
 #include <thread>
 
@@ -40,13 +41,19 @@ TEST(InterruptScope, SigintStopsARealTimeJobWithinOneBlockAndTheOldHandlerIsBack
   spec.pen = pen_for_head(spec.head, CornerStrategy::blanking, 100);  // about 1 s of marking
   SimScannerOptions so = simulator_options(spec);
   so.trace = true;
-  SimScanner sim(so);
-  StopFlag stop;
-  JobOptions o;
-  o.stop = &stop;
+  std::unique_ptr<SimScanner> scanner;
   JobResult r;
   int signal_seen = 0;
-  {
+  // A machine loaded by other work can starve the producer under ThreadSanitizer: the job then
+  // underruns (laser off, failed) before the signal is sent. That is the drain's safety, not
+  // what this test checks, so such a run is made again, up to three times; any other outcome
+  // is judged below.
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    scanner = std::make_unique<SimScanner>(so);
+    SimScanner& sim = *scanner;
+    StopFlag stop;
+    JobOptions o;
+    o.stop = &stop;
     cli::InterruptScope scope(stop);
     // Ctrl-C once 20000 samples are out, or never if the job ends first (an underrun on an
     // overloaded machine must fail the assertions below, not hang the test).
@@ -59,7 +66,10 @@ TEST(InterruptScope, SigintStopsARealTimeJobWithinOneBlockAndTheOldHandlerIsBack
     ended.store(true);
     operator_.join();
     signal_seen = scope.signal();
+    const bool starved = signal_seen == 0 && r.fault && r.fault->message.find("underrun") != std::string::npos;
+    if (!starved) break;
   }
+  const SimScanner& sim = *scanner;
   EXPECT_EQ(signal_seen, SIGINT);
   ASSERT_EQ(r.outcome, JobOutcome::aborted) << "the job ended before the signal: "
                                             << (r.fault ? r.fault->message : std::string("done"));

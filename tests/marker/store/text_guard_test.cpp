@@ -16,15 +16,14 @@
 #include "marker/production/text_repeats.hpp"
 #include "marker/store/digest.hpp"
 #include "store_test_support.hpp"
+#include "tests/marker/vars/at_utc.hpp"
 
 namespace mark {
 namespace {
 
 using namespace std::chrono;
 
-SysTime at_utc(int y, unsigned m, unsigned d, int hh, int mm) {
-  return SysTime{date::sys_days{date::year{y} / m / d}} + hours{hh} + minutes{mm};
-}
+using test::at_utc;
 
 std::string job_text(const std::string& counter, const std::string& rules, const std::string& templ) {
   return R"({"format": "marker-job/1", "time_zone": "UTC", "counters": {")" + counter + R"(": {)" + rules +

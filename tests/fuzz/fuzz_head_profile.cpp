@@ -1,7 +1,7 @@
 // libFuzzer target for the head's files, each input read as both: parse_head_profile either
 // throws InputError (a bad file, reported with its key and range) or returns a profile the
 // planner can trust — the chosen model's time constants and both limits finite and positive, its
-// ramp lag positive; parse_lag_pattern either throws InputError or returns a pattern of four
+// ramp lag positive, a resonance none or within a shaper's range; parse_lag_pattern either throws InputError or returns a pattern of four
 // lines per speed and two corners per corner speed, every end finite. Anything else (a crash, a sanitizer report, another
 // exception, a broken invariant) is a bug.
 #include <cmath>
@@ -33,6 +33,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!std::isfinite(p.inertia_s2()) || p.inertia_s2() < 0) broken("inverse-filter term invalid");
     if (!positive(p.max_speed_mm_s) || !positive(p.max_accel_mm_s2)) broken("limits not positive");
     if (!positive(p.field_mm) || !positive(p.tick_s)) broken("field or tick not positive");
+    // A resonance is none (0) or one a shaper can be designed for: 100 Hz .. 250 kHz, ζ 0 .. 0.5.
+    if (p.resonance_hz != 0 && !(p.resonance_hz >= 100 && p.resonance_hz <= 250000)) broken("resonance out of range");
+    if (!(p.resonance_zeta >= 0 && p.resonance_zeta <= 0.5)) broken("resonance damping out of range");
   } catch (const mark::InputError&) {
   }
   try {

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "marker/limits/pen_settings.hpp"
 #include "marker/head/head_file.hpp"
 #include "marker/output/output_file.hpp"
 
@@ -23,12 +24,13 @@ constexpr Range kTau{"tau_s", 1e-7, 0.1};
 constexpr Range kOmega{"omega_n_rad_s", 1.0, 1e8};
 constexpr Range kZeta{"zeta", 1e-3, 100};
 constexpr Range kSpeed{"max_speed_mm_s", 1e-3, 1e6};
-constexpr Range kAccel{"max_accel_mm_s2", 1e-3, 1e12};
+constexpr Range kAccelRange{"max_accel_mm_s2", 1e-3, 1e12};
 constexpr Range kField{"field_mm", 1e-3, 1e4};
-constexpr Range kTick{"tick_s", 1e-7, 1e-2};
+constexpr Range kTickRange{"tick_s", 1e-7, 1e-2};
 constexpr Range kRms{"", 0, 1e9};
-constexpr Range kResonance{"resonance_hz", 100, 250000};
-constexpr Range kResonanceZeta{"resonance_zeta", 0, 0.5};
+// A resonance a pen's shaper takes (the shaper settings' bounds).
+constexpr Range kResonance{"resonance_hz", kShaperHz.bounds.min, kShaperHz.bounds.max};
+constexpr Range kResonanceZeta{"resonance_zeta", kShaperZeta.bounds.min, kShaperZeta.bounds.max};
 
 constexpr HeadFileKind kKind{"head profile", kFormat, kVersion};
 
@@ -123,9 +125,9 @@ HeadProfile parse_head_profile(std::string_view json_text, std::string_view wher
   p.omega_n_rad_s = number(j, kOmega.key, kOmega, where, !first);
   p.zeta = number(j, kZeta.key, kZeta, where, !first);
   p.max_speed_mm_s = number(j, kSpeed.key, kSpeed, where);
-  p.max_accel_mm_s2 = number(j, kAccel.key, kAccel, where);
+  p.max_accel_mm_s2 = number(j, kAccelRange.key, kAccelRange, where);
   p.field_mm = number(j, kField.key, kField, where);
-  p.tick_s = number(j, kTick.key, kTick, where, false, 10e-6);
+  p.tick_s = number(j, kTickRange.key, kTickRange, where, false, 10e-6);
   p.fit_rms_first_um = number(j, "fit_rms_first_um", kRms, where, false);
   p.fit_rms_second_um = number(j, "fit_rms_second_um", kRms, where, false);
   p.resonance_hz = number(j, kResonance.key, kResonance, where, false);

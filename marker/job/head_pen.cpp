@@ -1,6 +1,7 @@
 #include "marker/job/head_pen.hpp"
 
 #include "marker/limits/pen_settings.hpp"
+#include "marker/plan/input_shaper.hpp"
 
 namespace mark {
 
@@ -22,7 +23,7 @@ Pen pen_for_profile(const HeadProfile& profile, CornerStrategy strategy, double 
                         kJumpSpeedShare * profile.max_speed_mm_s, tick_s, rules);
   // A resonance the identification saw: the look-ahead planner shapes against it, where the
   // tick can place the shaper's impulses (at most a quarter of the tick rate).
-  if ((rules.lookahead || rules.feed_forward) && profile.resonance_hz > 0 && profile.resonance_hz <= 0.25 / tick_s) {
+  if ((rules.lookahead || rules.feed_forward) && profile.resonance_hz > 0 && profile.resonance_hz <= max_shaper_hz(tick_s)) {
     pen.shaper_hz = profile.resonance_hz;
     pen.shaper_zeta = profile.resonance_zeta;
   }

@@ -5,7 +5,9 @@
 
 #include "base/error.hpp"
 #include "marker/layout/layout.hpp"
+#include "marker/limits/pen_settings.hpp"
 #include "marker/limits/value_range.hpp"
+#include "marker/plan/input_shaper.hpp"
 
 namespace mark {
 namespace {
@@ -57,17 +59,17 @@ void check_pen(const Pen& pen, const HeadModel& head) {
         throw InputError("look-ahead and feed-forward parameters must be finite and not negative");
   }
   if (pen.shaper_hz != 0) {
-    // The shaper's impulses half a period apart must be at least two ticks apart, or the split
-    // between ticks no longer places them where the resonance needs them.
-    const double most = 0.25 / pen.tick_s;
+    const double most = max_shaper_hz(pen.tick_s);
     if (!(pen.lookahead || pen.feed_forward()))
       throw InputError("--shaper-hz needs the look-ahead planner (give --lookahead or --feed-forward)");
     if (!(pen.shaper_hz > 0) || !(pen.shaper_hz <= most * (1 + 1e-9)))
       throw InputError("--shaper-hz " + num(pen.shaper_hz, 0) + " Hz is outside the range at a " +
                        num(pen.tick_s * 1e6, 1) + " µs tick (above 0, at most " + num(most, 0) +
                        " Hz, a quarter of the tick rate)");
-    if (!(pen.shaper_zeta >= 0) || !(pen.shaper_zeta <= 0.5))
-      throw InputError("--shaper-zeta " + num(pen.shaper_zeta, 3) + " is outside 0 to 0.5");
+    const Bounds zeta = kShaperZeta.bounds;
+    if (!(pen.shaper_zeta >= zeta.min) || !(pen.shaper_zeta <= zeta.max))
+      throw InputError("--shaper-zeta " + num(pen.shaper_zeta, 3) + " is outside " + num(zeta.min, 0) + " to " +
+                       num(zeta.max, 1));
   }
 }
 

@@ -34,6 +34,11 @@ struct InputShaper {
   std::uint32_t tail_ticks() const { return taps.empty() ? 0 : static_cast<std::uint32_t>(taps.size() - 1); }
 };
 
+// The highest resonance a shaper can be designed for at this tick: a quarter of the tick rate,
+// so the impulses half a period apart are at least two ticks apart (closer, the split between
+// ticks no longer places them where the resonance needs them).
+inline double max_shaper_hz(double tick_s) { return 0.25 / tick_s; }
+
 // The pen's shaper (none when pen.shaper_hz is 0). Its impulses fall between ticks: each is
 // split between the two ticks around it in proportion, which keeps the taps' mean delay exact.
 InputShaper design_input_shaper(const Pen& pen);
